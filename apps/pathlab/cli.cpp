@@ -1,0 +1,251 @@
+#include "cli.h"
+
+#include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <regex>
+#include <string>
+
+#include "pathlab/debug_views.h"
+#include "pathlab/error.h"
+#include "pathlab/render.h"
+#include "pathlab/scene_io.h"
+#include "pathlab/tasks/placeholders.h"
+
+#ifndef PATHLAB_TASK_SUMMARY
+#define PATHLAB_TASK_SUMMARY "unknown"
+#endif
+
+namespace pathlab {
+namespace {
+
+struct RenderArgs {
+  std::string scene;
+  std::optional<int> threads;  // absent: all cores
+  std::optional<int> spp, lightSamples, maxDepth;
+  std::string resolution;          // -d WxH
+  std::vector<int> widthHeight;    // -r W H
+  std::string output = "render.png";
+  std::optional<uint64_t> seed;
+  std::string reference;
+  std::string integrator = "preview";
+  bool quiet = false;
+};
+
+struct DebugArgs {
+  int task = 0;
+  std::string view;
+  std::string scene;
+  std::string resolution;
+  std::string output;
+  std::vector<int> pixel;
+  std::optional<int> threads;
+  bool list = false;
+};
+
+std::string formatRate(double perSecond) {
+  char buffer[32];
+  if (perSecond >= 1e6) std::snprintf(buffer, sizeof buffer, "%.2fM", perSecond / 1e6);
+  else if (perSecond >= 1e3) std::snprintf(buffer, sizeof buffer, "%.1fk", perSecond / 1e3);
+  else std::snprintf(buffer, sizeof buffer, "%.0f", perSecond);
+  return buffer;
+}
+
+Scene loadSceneArg(const std::string& path) { return path.empty() ? defaultScene() : loadScene(path); }
+
+// -d WxH or -r W H into the scene's resolution.
+void applyResolution(RenderSettings& settings, const std::string& wxh, const std::vector<int>& pair) {
+  if (!wxh.empty()) {
+    std::smatch m;
+    if (!std::regex_match(wxh, m, std::regex(R"((\d{1,9})[xX](\d{1,9}))"))) {
+      throw Error("-d: expected WIDTHxHEIGHT such as 800x600, got \"" + wxh + "\"");
+    }
+    settings.width = std::stoi(m[1]);
+    settings.height = std::stoi(m[2]);
+  } else if (!pair.empty()) {
+    settings.width = pair[0];
+    settings.height = pair[1];
+  } else {
+    return;
+  }
+  if (settings.width < 1 || settings.height < 1 || settings.width > 16384 || settings.height > 16384 ||
+      int64_t(settings.width) * settings.height > (int64_t(1) << 26)) {
+    throw Error("resolution " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                " is out of range (each side 1..16384, at most 67M pixels)");
+  }
+}
+
+// Fail before rendering, not after an hour, when the output cannot be written.
+void checkOutputPath(const std::string& path) {
+  if (!isWritableImagePath(path)) {
+    throw Error(path + ": unsupported output format (use .png, .exr, .hdr or .jpg)");
+  }
+  std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (parent.empty()) parent = ".";
+  if (!std::filesystem::is_directory(parent)) throw Error(path + ": output folder does not exist");
+  if (access(parent.c_str(), W_OK) != 0) throw Error(path + ": output folder is not writable");
+  if (std::filesystem::is_directory(path)) throw Error(path + ": is a folder, expected an image file name");
+}
+
+int checkedCount(const char* flag, int value, int min, int max) {
+  if (value < min || value > max) {
+    throw Error(std::string(flag) + ": expected a value in [" + std::to_string(min) + ", " +
+                std::to_string(max) + "], got " + std::to_string(value));
+  }
+  return value;
+}
+
+int runRender(const RenderArgs& args, const std::atomic<bool>& cancel) {
+  Scene scene = loadSceneArg(args.scene);
+  RenderSettings& settings = scene.render;
+  if (args.spp) settings.samplesPerPixel = checkedCount("-s", *args.spp, 1, 1 << 20);
+  if (args.lightSamples) settings.lightSamples = checkedCount("-l", *args.lightSamples, 1, 4096);
+  if (args.maxDepth) settings.maxDepth = checkedCount("-m", *args.maxDepth, 0, 1024);
+  if (args.seed) settings.seed = *args.seed;
+  applyResolution(settings, args.resolution, args.widthHeight);
+  RenderOptions options;
+  if (args.threads) options.threads = checkedCount("-t", *args.threads, 1, 1024);
+  options.progress = !args.quiet;
+  options.cancel = &cancel;
+  auto integrator = integratorFromName(args.integrator);
+  if (!integrator) throw Error("--integrator: unknown integrator \"" + args.integrator + "\" (preview, normals)");
+  options.integrator = *integrator;
+  checkOutputPath(args.output);
+  std::optional<Image> reference;
+  if (!args.reference.empty()) reference = readImage(args.reference);
+
+  // Tasks 3–7 are not written yet: each says so once.
+  bvhPlaceholder();
+  directLightingPlaceholder();
+  pathTracingPlaceholder();
+  mirrorGlassPlaceholder();
+  environmentPlaceholder();
+
+  RenderResult result = render(scene, options);
+  const RenderStats& stats = result.stats;
+  writeImage(result.image, args.output, {{"pathlab:spp", std::to_string(stats.completedSpp)},
+                                         {"pathlab:scene", scene.source}});
+
+  if (stats.nonFiniteSamples > 0) {
+    std::fprintf(stderr, "warning: %llu samples were NaN or Inf (first at pixel %d,%d); they count as black\n",
+                 (unsigned long long)stats.nonFiniteSamples, stats.firstNonFinitePixel->x,
+                 stats.firstNonFinitePixel->y);
+  }
+  if (stats.interrupted) {
+    std::fprintf(stderr, "interrupted: wrote %s with %d of %d samples per pixel\n", args.output.c_str(),
+                 stats.completedSpp, settings.samplesPerPixel);
+    return 130;
+  }
+  if (!args.quiet) {
+    std::printf("%s: %dx%d, %d spp, %s integrator, tasks %s\n", args.output.c_str(), settings.width,
+                settings.height, settings.samplesPerPixel, integratorName(options.integrator),
+                PATHLAB_TASK_SUMMARY);
+    std::printf("time %.3f s, %s samples/s, %s rays/s\n", stats.seconds,
+                formatRate(double(stats.samples) / stats.seconds).c_str(),
+                formatRate(double(stats.rays) / stats.seconds).c_str());
+  }
+  if (reference) {
+    ImageError error = compareImages(result.image, *reference);
+    std::printf("vs %s: RMSE %.6g, relMSE %.6g\n", args.reference.c_str(), error.rmse, error.relMse);
+  }
+  return 0;
+}
+
+int runDebug(const DebugArgs& args) {
+  std::vector<DebugView> views = allDebugViews();
+  if (args.list) {
+    for (const DebugView& view : views) {
+      std::printf("--task %d --view %-14s %s\n", view.task, view.name.c_str(), view.description.c_str());
+    }
+    return 0;
+  }
+  if (args.task == 0 || args.view.empty()) throw Error("debug: give --task N and --view VIEW (see --list)");
+  const DebugView* chosen = nullptr;
+  std::string available;
+  for (const DebugView& view : views) {
+    if (view.task != args.task) continue;
+    available += (available.empty() ? "" : ", ") + view.name;
+    if (view.name == args.view) chosen = &view;
+  }
+  if (!chosen) {
+    throw Error("debug: task " + std::to_string(args.task) + " has no view \"" + args.view + "\"" +
+                (available.empty() ? " (it has no views yet)" : " (views: " + available + ")"));
+  }
+  Scene scene = loadSceneArg(args.scene);
+  applyResolution(scene.render, args.resolution, {});
+  std::string output = args.output.empty()
+                           ? "debug-task" + std::to_string(args.task) + "-" + args.view + ".png"
+                           : args.output;
+  checkOutputPath(output);
+  DebugViewRequest request{scene, scene.render.width, scene.render.height};
+  if (args.threads) request.threads = checkedCount("-t", *args.threads, 1, 1024);
+  if (!args.pixel.empty()) {
+    request.pixel = {args.pixel[0], args.pixel[1]};
+    if (request.pixel.x < 0 || request.pixel.y < 0 || request.pixel.x >= scene.render.width ||
+        request.pixel.y >= scene.render.height) {
+      throw Error("--pixel: " + std::to_string(request.pixel.x) + "," + std::to_string(request.pixel.y) +
+                  " is outside the " + std::to_string(scene.render.width) + "x" +
+                  std::to_string(scene.render.height) + " image");
+    }
+  }
+  writeImage(chosen->render(request), output);
+  std::printf("%s: task %d view %s\n", output.c_str(), args.task, args.view.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int runCli(int argc, char** argv, const std::atomic<bool>& cancel) {
+  CLI::App app{"PathLab: a Monte Carlo path tracer to learn from.\n"
+               "Renders SCENE (a .json file; none = the embedded Cornell box) to an image."};
+  app.set_version_flag("--version", "pathlab 0.1 (tasks " PATHLAB_TASK_SUMMARY ")");
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // a repeated flag: last wins
+  RenderArgs render;
+  app.add_option("scene", render.scene, "Scene file (.json); omit for the built-in Cornell box");
+  app.add_option("-t,--threads", render.threads, "Threads (default: all cores)");
+  app.add_option("-s,--spp", render.spp, "Samples per pixel");
+  app.add_option("-l,--light-samples", render.lightSamples, "Samples per area light");
+  app.add_option("-m,--max-depth", render.maxDepth, "Maximum ray depth");
+  auto* d = app.add_option("-d", render.resolution, "Resolution WIDTHxHEIGHT, e.g. 800x600");
+  app.add_option("-r", render.widthHeight, "Resolution as two numbers: -r WIDTH HEIGHT")->expected(2)->excludes(d);
+  app.add_option("-o,-w,--output", render.output, "Output image: .png (display) or .exr (linear)");
+  app.add_option("--seed", render.seed, "Random seed");
+  app.add_option("--ref", render.reference, "Reference image: print RMSE and relMSE after the render");
+  app.add_option("--integrator", render.integrator, "preview (default) or normals");
+  app.add_flag("-q,--quiet", render.quiet, "No progress bar or summary");
+
+  DebugArgs debug;
+  CLI::App* debugCommand = app.add_subcommand("debug", "Write a task's debugger view to a PNG");
+  debugCommand->add_option("--task", debug.task, "Task number 1-7");
+  debugCommand->add_option("--view", debug.view, "View name (see --list)");
+  debugCommand->add_option("scene", debug.scene, "Scene file; omit for the built-in Cornell box");
+  debugCommand->add_option("-d", debug.resolution, "Resolution WIDTHxHEIGHT");
+  debugCommand->add_option("-o,--output", debug.output, "Output PNG");
+  debugCommand->add_option("--pixel", debug.pixel, "Inspected pixel: --pixel X Y")->expected(2);
+  debugCommand->add_option("-t,--threads", debug.threads, "Threads (default: all cores)");
+  debugCommand->add_flag("--list", debug.list, "List every task's views");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "pathlab: %s (see pathlab --help)\n", e.what());
+    return 1;
+  }
+  try {
+    if (debugCommand->parsed()) return runDebug(debug);
+    return runRender(render, cancel);
+  } catch (const Error& e) {
+    std::fprintf(stderr, "pathlab: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace pathlab

@@ -1,0 +1,12 @@
+// The `pathlab` command line: parsing, validation and the two commands
+// (render, debug). main.cpp only wires signals and exit codes.
+#pragma once
+
+#include <atomic>
+
+namespace pathlab {
+
+// Returns the process exit code: 0 success, 1 bad input, 130 interrupted.
+int runCli(int argc, char** argv, const std::atomic<bool>& cancel);
+
+}  // namespace pathlab

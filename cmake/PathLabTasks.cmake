@@ -1,0 +1,81 @@
+# Every task file is compiled twice into OBJECT libraries with the same symbols:
+#   pathlab_taskN_student    from tasks/NN-name/FILE.cpp   (the student's TODOs)
+#   pathlab_taskN_reference  from solutions/NN-name/FILE.cpp
+# An executable links one of the two per task. OBJECT libraries are used so the
+# framework (a static library that calls the task functions) resolves against
+# whichever implementation the executable chose, in any link order.
+
+set(PATHLAB_TASK_DIRS
+  01-camera-rays/camera_rays.cpp
+  02-intersection/intersection.cpp
+  03-bvh/bvh.cpp
+  04-direct-lighting/direct_lighting.cpp
+  05-path-tracing/path_tracing.cpp
+  06-mirror-glass/mirror_glass.cpp
+  07-environment/environment.cpp)
+
+function(pathlab_add_tasks)
+  set(n 0)
+  foreach(rel IN LISTS PATHLAB_TASK_DIRS)
+    math(EXPR n "${n} + 1")
+    foreach(variant student reference)
+      if(variant STREQUAL student)
+        set(src ${CMAKE_SOURCE_DIR}/tasks/${rel})
+      else()
+        set(src ${CMAKE_SOURCE_DIR}/solutions/${rel})
+      endif()
+      if(EXISTS ${src})
+        add_library(pathlab_task${n}_${variant} OBJECT ${src})
+        target_link_libraries(pathlab_task${n}_${variant} PUBLIC pathlab_framework)
+      endif()
+    endforeach()
+  endforeach()
+endfunction()
+
+# pathlab_link_tasks(TARGET <target> [VARIANT reference|student|selected] [STUDENT_TASK n])
+#   selected:      the configured choice (PATHLAB_TASKS with PATHLAB_TASKn overrides)
+#   STUDENT_TASK:  task n from tasks/, every other task from the reference (grading isolation)
+function(pathlab_link_tasks)
+  cmake_parse_arguments(ARG "" "TARGET;VARIANT;STUDENT_TASK" "" ${ARGN})
+  if(NOT ARG_VARIANT)
+    set(ARG_VARIANT selected)
+  endif()
+  foreach(n RANGE 1 7)
+    if(ARG_STUDENT_TASK)
+      if(n EQUAL ARG_STUDENT_TASK)
+        set(v student)
+      else()
+        set(v reference)
+      endif()
+    elseif(ARG_VARIANT STREQUAL selected)
+      set(v ${PATHLAB_TASKS})
+      if(PATHLAB_TASK${n})
+        set(v ${PATHLAB_TASK${n}})
+      endif()
+    else()
+      set(v ${ARG_VARIANT})
+    endif()
+    if(NOT v MATCHES "^(reference|student)$")
+      message(FATAL_ERROR "PATHLAB_TASK${n}/PATHLAB_TASKS must be 'reference' or 'student', got '${v}'")
+    endif()
+    if(NOT TARGET pathlab_task${n}_${v})
+      message(FATAL_ERROR "Task ${n} has no ${v} implementation in this tree (solutions/ missing?)")
+    endif()
+    target_sources(${ARG_TARGET} PRIVATE $<TARGET_OBJECTS:pathlab_task${n}_${v}>)
+  endforeach()
+  target_link_libraries(${ARG_TARGET} PRIVATE pathlab_framework)
+endfunction()
+
+# Human-readable summary of the configured choice, compiled into the binaries.
+function(pathlab_task_summary out)
+  set(s "")
+  foreach(n RANGE 1 7)
+    set(v ${PATHLAB_TASKS})
+    if(PATHLAB_TASK${n})
+      set(v ${PATHLAB_TASK${n}})
+    endif()
+    string(APPEND s "${n}:${v} ")
+  endforeach()
+  string(STRIP "${s}" s)
+  set(${out} "${s}" PARENT_SCOPE)
+endfunction()

@@ -1,0 +1,19 @@
+// The record of a ray hitting a surface, as the renderer and debuggers use it.
+#pragma once
+
+#include <cstdint>
+
+#include "pathlab/math.h"
+
+namespace pathlab {
+
+struct Hit {
+  float t = kInfinity;       // ray parameter of the hit
+  Point3 point{0.0f};        // world-space hit position
+  Vec3 geometricNormal{0.0f, 0.0f, 1.0f};  // unit, from the winding (triangles) or outward (spheres)
+  Vec3 shadingNormal{0.0f, 0.0f, 1.0f};    // unit, interpolated; same hemisphere as geometricNormal
+  uint32_t primitive = 0;    // index into Scene::primitives
+  uint32_t material = 0;     // index into Scene::materials
+};
+
+}  // namespace pathlab

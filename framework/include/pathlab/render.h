@@ -1,0 +1,62 @@
+// The multithreaded progressive render loop. Samples are taken in passes
+// (1, 1, 2, 4, ... samples per pixel, up to 64 at a time) over 16x16 tiles;
+// sample i of a pixel always uses the random stream (seed, pixel, i), so the
+// image is bit-identical for any thread count, tile size or pass schedule.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "pathlab/image.h"
+#include "pathlab/random.h"
+#include "pathlab/ray.h"
+#include "pathlab/scene.h"
+#include "pathlab/tasks/camera_rays.h"
+
+namespace pathlab {
+
+enum class Integrator {
+  Preview,  // eye light: albedo * |cos| + emission — needs tasks 1–2 only
+  Normals,  // shading normal as colour
+};
+
+std::optional<Integrator> integratorFromName(const std::string& name);
+const char* integratorName(Integrator integrator);
+
+struct RenderOptions {
+  Integrator integrator = Integrator::Preview;
+  int threads = 0;    // 0: all hardware threads
+  int tileSize = 16;
+  bool progress = true;
+  const std::atomic<bool>* cancel = nullptr;  // set from a signal handler to stop early
+};
+
+struct RenderStats {
+  double seconds = 0.0;
+  uint64_t samples = 0;           // camera samples taken
+  uint64_t rays = 0;              // every ray traced (camera, shadow, bounce)
+  uint64_t nonFiniteSamples = 0;  // NaN or Inf samples, left out of the image
+  std::optional<IVec2> firstNonFinitePixel;  // in scanline order
+  int completedSpp = 0;           // every pixel has at least this many samples
+  bool interrupted = false;
+};
+
+struct RenderResult {
+  Image image;
+  RenderStats stats;
+};
+
+// Per-thread state an integrator may use; counts rays for the statistics.
+struct TraceContext {
+  const Scene& scene;
+  uint64_t rays = 0;
+};
+
+// Radiance arriving along one camera ray, by the chosen integrator.
+Color traceRadiance(TraceContext& context, Integrator integrator, const Ray& ray, Sampler& sampler);
+
+RenderResult render(const Scene& scene, const RenderOptions& options);
+
+}  // namespace pathlab

@@ -1,0 +1,30 @@
+// Scene-level ray queries built on task 2's primitive tests. The brute-force
+// loop is the ground truth that task 3's BVH is tested against.
+#pragma once
+
+#include <optional>
+
+#include "pathlab/hit.h"
+#include "pathlab/ray.h"
+#include "pathlab/scene.h"
+
+namespace pathlab {
+
+// t (and barycentrics for triangles) of one primitive, without the surface record.
+struct PrimitiveHit {
+  float t = kInfinity;
+  float b1 = 0.0f;
+  float b2 = 0.0f;
+  uint32_t primitive = 0;
+};
+
+std::optional<PrimitiveHit> intersectPrimitive(const Scene& scene, uint32_t primitive,
+                                               const Ray& ray, Interval range);
+
+// Completes a primitive hit into the full record (point, normals, material).
+Hit surfaceHit(const Scene& scene, const Ray& ray, const PrimitiveHit& hit);
+
+// Closest hit over every primitive: O(n) per ray.
+std::optional<Hit> intersectBruteForce(const Scene& scene, const Ray& ray, Interval range);
+
+}  // namespace pathlab

@@ -1,0 +1,12 @@
+#include "pathlab/debug_views.h"
+
+namespace pathlab {
+
+std::vector<DebugView> allDebugViews() {
+  std::vector<DebugView> views;
+  addCameraRayViews(views);
+  addIntersectionViews(views);
+  return views;
+}
+
+}  // namespace pathlab

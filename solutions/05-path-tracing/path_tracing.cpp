@@ -1,0 +1,10 @@
+// Task 5 — placeholder. This task's student file and reference arrive with
+// its own issue; until then the renderer says once that it is missing.
+#include "pathlab/tasks/placeholders.h"
+#include "pathlab/todo.h"
+
+namespace pathlab {
+
+void pathTracingPlaceholder() { PATHLAB_TODO("T5"); }
+
+}  // namespace pathlab

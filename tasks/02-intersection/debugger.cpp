@@ -1,0 +1,80 @@
+// Task 2's visual debugger (students don't edit this file: it shows what
+// their intersection.cpp does). One camera ray per pixel centre, closest hit
+// over all primitives.
+//   normals       shading normal as colour 0.5 + 0.5 n (black: no hit)
+//   depth         hit distance, near = bright, far = dark (blue: no hit)
+//   primitive-id  one colour per primitive (black: no hit)
+#include <algorithm>
+#include <optional>
+#include <vector>
+
+#include "pathlab/debug_views.h"
+#include "pathlab/draw.h"
+#include "pathlab/parallel.h"
+#include "pathlab/scene_intersect.h"
+#include "pathlab/tasks/camera_rays.h"
+
+namespace pathlab {
+namespace {
+
+// Closest hit through every pixel centre.
+std::vector<std::optional<Hit>> primaryHits(const DebugViewRequest& request) {
+  const Camera& camera = request.scene.camera;
+  const CameraBasis basis = cameraBasis(camera);
+  const IVec2 resolution{request.width, request.height};
+  std::vector<std::optional<Hit>> hits(size_t(request.width) * size_t(request.height));
+  forEachPixel(request.width, request.height, request.threads, [&](int x, int y) {
+    Ray ray = generateCameraRay(camera, basis, Point2(float(x) + 0.5f, float(y) + 0.5f), resolution);
+    hits[size_t(y) * size_t(request.width) + size_t(x)] =
+        intersectBruteForce(request.scene, ray, Interval{0.0f, kInfinity});
+  });
+  return hits;
+}
+
+Color display(Vec3 v) {
+  v = glm::clamp(v, 0.0f, 1.0f);
+  return {srgbToLinear(v.x), srgbToLinear(v.y), srgbToLinear(v.z)};
+}
+
+Image normalsView(const DebugViewRequest& request) {
+  auto hits = primaryHits(request);
+  Image image(request.width, request.height);
+  for (size_t i = 0; i < hits.size(); ++i) {
+    if (hits[i]) image.pixels[i] = display(0.5f * (hits[i]->shadingNormal + Vec3(1.0f)));
+  }
+  return image;
+}
+
+Image depthView(const DebugViewRequest& request) {
+  auto hits = primaryHits(request);
+  float nearest = kInfinity, farthest = 0.0f;
+  for (const auto& hit : hits) {
+    if (hit) nearest = std::min(nearest, hit->t), farthest = std::max(farthest, hit->t);
+  }
+  Image image(request.width, request.height, display({0.1f, 0.15f, 0.4f}));
+  for (size_t i = 0; i < hits.size(); ++i) {
+    if (!hits[i]) continue;
+    float s = farthest > nearest ? (hits[i]->t - nearest) / (farthest - nearest) : 0.0f;
+    image.pixels[i] = display(Vec3(1.0f - 0.85f * s));
+  }
+  return image;
+}
+
+Image primitiveIdView(const DebugViewRequest& request) {
+  auto hits = primaryHits(request);
+  Image image(request.width, request.height);
+  for (size_t i = 0; i < hits.size(); ++i) {
+    if (hits[i]) image.pixels[i] = display(idColor(hits[i]->primitive));
+  }
+  return image;
+}
+
+}  // namespace
+
+void addIntersectionViews(std::vector<DebugView>& views) {
+  views.push_back({2, "normals", "shading normal as colour 0.5 + 0.5 n", normalsView});
+  views.push_back({2, "depth", "hit distance: near bright, far dark, no hit blue", depthView});
+  views.push_back({2, "primitive-id", "one colour per primitive", primitiveIdView});
+}
+
+}  // namespace pathlab

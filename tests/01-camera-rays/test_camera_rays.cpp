@@ -1,0 +1,242 @@
+// Autograder suite for task 1 — camera rays. Tests run from basic to
+// advanced; the first failure is usually the root cause.
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+
+#include "check.h"
+#include "grading.h"
+#include "pathlab/tasks/camera_rays.h"
+
+using namespace pathlab;
+using namespace pathlab::test;
+
+namespace {
+
+Camera makeCamera(Point3 position, Point3 lookAt, Vec3 up, float vfov) {
+  Camera c;
+  c.position = position;
+  c.lookAt = lookAt;
+  c.up = up;
+  c.vfovDegrees = vfov;
+  return c;
+}
+
+// The expected direction through a raster point, in double precision, from
+// the frame the camera must have when `up` is not parallel to the view.
+DVec3 expectedDirection(const Camera& camera, Point2 raster, IVec2 resolution) {
+  DVec3 forward = glm::normalize(DVec3(camera.lookAt) - DVec3(camera.position));
+  DVec3 right = glm::normalize(glm::cross(forward, DVec3(camera.up)));
+  DVec3 up = glm::cross(right, forward);
+  double halfHeight = std::tan(double(camera.vfovDegrees) * M_PI / 360.0);
+  double halfWidth = halfHeight * double(resolution.x) / double(resolution.y);
+  double ndcX = 2.0 * raster.x / resolution.x - 1.0, ndcY = 1.0 - 2.0 * raster.y / resolution.y;
+  return glm::normalize(forward + ndcX * halfWidth * right + ndcY * halfHeight * up);
+}
+
+void checkRay(const Camera& camera, Point2 raster, IVec2 resolution, double tolerance = 2e-6) {
+  CameraBasis basis = cameraBasis(camera);
+  Ray ray = generateCameraRay(camera, basis, raster, resolution);
+  DVec3 expected = expectedDirection(camera, raster, resolution);
+  CAPTURE(raster.x);
+  CAPTURE(raster.y);
+  CAPTURE(resolution.x);
+  CAPTURE(resolution.y);
+  CAPTURE(camera.vfovDegrees);
+  INFO("expected direction " << str(Vec3(expected)) << ", got " << str(ray.direction));
+  CHECK(near(ray.origin, camera.position, 0.0f));
+  CHECK(glm::length(DVec3(ray.direction) - expected) <= tolerance);
+}
+
+std::array<Camera, 4> someCameras() {
+  return {makeCamera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 45),
+          makeCamera({1, 2, 3}, {-2, 0.5f, 1}, {0, 1, 0}, 60),
+          makeCamera({-5, 1, 0.5f}, {3, -1, 2}, {0.2f, 1, -0.1f}, 30),   // up not perpendicular
+          makeCamera({0, 10, 0}, {0.3f, 0, 0.2f}, {0, 0, 1}, 90)};
+}
+
+void checkOrthonormal(const CameraBasis& b) {
+  INFO("forward " << str(b.forward) << " right " << str(b.right) << " up " << str(b.up));
+  REQUIRE(finite(b.forward));
+  REQUIRE(finite(b.right));
+  REQUIRE(finite(b.up));
+  CHECK(std::abs(glm::length(b.forward) - 1.0f) < 1e-5f);
+  CHECK(std::abs(glm::length(b.right) - 1.0f) < 1e-5f);
+  CHECK(std::abs(glm::length(b.up) - 1.0f) < 1e-5f);
+  CHECK(std::abs(glm::dot(b.forward, b.right)) < 1e-5f);
+  CHECK(std::abs(glm::dot(b.forward, b.up)) < 1e-5f);
+  CHECK(std::abs(glm::dot(b.right, b.up)) < 1e-5f);
+  // right = forward x up: a right-handed frame looking down its -z axis.
+  CHECK(near(glm::cross(b.forward, b.up), b.right, 1e-5f));
+}
+
+}  // namespace
+
+TEST_CASE("T1.1 pixel sample: u = (0.5, 0.5) is the pixel centre (half-pixel offset)" *
+          grading(2, "pixel (i, j) covers [i, i+1) x [j, j+1): its centre is (i + 0.5, j + 0.5); "
+                     "return pixel + u")) {
+  for (IVec2 pixel : {IVec2(0, 0), IVec2(3, 7), IVec2(799, 599), IVec2(1023, 0)}) {
+    Point2 p = pixelSamplePosition(pixel, Vec2(0.5f));
+    CAPTURE(pixel.x);
+    CAPTURE(pixel.y);
+    CHECK(p.x == doctest::Approx(pixel.x + 0.5f).epsilon(1e-7));
+    CHECK(p.y == doctest::Approx(pixel.y + 0.5f).epsilon(1e-7));
+  }
+}
+
+TEST_CASE("T1.1 pixel sample: u spreads samples uniformly over the whole pixel" *
+          grading(3, "every u in [0,1)^2 must land inside the pixel, and equal areas of u must cover equal "
+                     "areas of the pixel (no fixed centre, no scaling by 0.5)")) {
+  // A 16 x 16 grid of u values must put exactly 16 samples in each of the
+  // pixel's 4 x 4 sub-squares: deterministic, so no false failures.
+  const IVec2 pixel{12, 34};
+  int counts[4][4] = {};
+  for (int i = 0; i < 16; ++i) {
+    for (int j = 0; j < 16; ++j) {
+      Vec2 u((float(i) + 0.5f) / 16.0f, (float(j) + 0.5f) / 16.0f);
+      Point2 p = pixelSamplePosition(pixel, u) - Point2(pixel);
+      CAPTURE(u.x);
+      CAPTURE(u.y);
+      REQUIRE(p.x >= 0.0f);
+      REQUIRE(p.x <= 1.0f);
+      REQUIRE(p.y >= 0.0f);
+      REQUIRE(p.y <= 1.0f);
+      counts[std::min(3, int(p.y * 4.0f))][std::min(3, int(p.x * 4.0f))]++;
+    }
+  }
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) {
+      CAPTURE(r);
+      CAPTURE(c);
+      CHECK(counts[r][c] == 16);
+    }
+  // The extremes of u stay inside the pixel.
+  for (Vec2 u : {Vec2(0.0f), Vec2(0.99999994f), Vec2(0.0f, 0.99999994f)}) {
+    Point2 p = pixelSamplePosition(pixel, u);
+    CHECK(p.x >= 12.0f);
+    CHECK(p.x <= 13.0f);
+    CHECK(p.y >= 34.0f);
+    CHECK(p.y <= 35.0f);
+  }
+}
+
+TEST_CASE("T1.2 camera basis: orthonormal, right-handed, forward points at lookAt" *
+          grading(3, "forward = normalize(lookAt - position); right = normalize(cross(forward, up)); "
+                     "up = cross(right, forward) — normalise, and mind the order of the cross products")) {
+  for (const Camera& camera : someCameras()) {
+    CameraBasis b = cameraBasis(camera);
+    checkOrthonormal(b);
+    Vec3 forward = glm::normalize(camera.lookAt - camera.position);
+    INFO("expected forward " << str(forward) << ", got " << str(b.forward));
+    CHECK(near(b.forward, forward, 1e-5f));
+    // The image's up agrees with the requested up, and the horizon is level.
+    CHECK(glm::dot(b.up, camera.up) > 0.0f);
+    CHECK(std::abs(glm::dot(b.right, glm::normalize(camera.up))) < 1e-5f);
+  }
+}
+
+TEST_CASE("T1.2 camera basis: up parallel to the view direction still gives a finite orthonormal frame" *
+          grading(2, "cross(forward, up) is zero when up is parallel to forward, and normalize() of it is "
+                     "NaN: detect a tiny cross product and pick another vector perpendicular to forward")) {
+  const Camera cameras[] = {
+      makeCamera({0, 5, 0}, {0, 0, 0}, {0, 1, 0}, 45),    // looking straight down, up = -forward
+      makeCamera({0, 0, 0}, {0, 3, 0}, {0, 1, 0}, 45),    // looking straight up, up = forward
+      makeCamera({1, 1, 1}, {2, 2, 2}, {1, 1, 1}, 60),    // diagonal, up = forward
+      makeCamera({0, 0, 0}, {0, 0, -1}, {0, 1e-9f, -1}, 45),  // parallel to within rounding
+  };
+  for (const Camera& camera : cameras) {
+    CameraBasis b = cameraBasis(camera);
+    checkOrthonormal(b);
+    CHECK(near(b.forward, glm::normalize(camera.lookAt - camera.position), 1e-5f));
+    Ray ray = generateCameraRay(camera, b, Point2(0.0f), IVec2(64, 48));
+    CHECK(finite(ray.direction));
+  }
+}
+
+TEST_CASE("T1.3 camera ray: the image centre looks straight along forward, from the camera position" *
+          grading(2, "the ray starts at camera.position; NDC (0, 0) must give direction = forward")) {
+  for (const Camera& camera : someCameras()) {
+    for (IVec2 resolution : {IVec2(64, 64), IVec2(800, 600), IVec2(101, 37)}) {
+      checkRay(camera, Point2(resolution) * 0.5f, resolution);
+    }
+  }
+}
+
+TEST_CASE("T1.3 camera ray: corners and edges of the image sit at the field of view's edges" *
+          grading(3, "half-height = tan(vfov/2) with vfov in degrees (glm::radians), half-width = "
+                     "aspect * half-height, ndcY = 1 - 2 y / height (raster y grows downwards)")) {
+  const IVec2 resolution{320, 240};
+  for (const Camera& camera : someCameras()) {
+    for (Point2 raster : {Point2(0, 0), Point2(320, 0), Point2(0, 240), Point2(320, 240), Point2(160, 0),
+                          Point2(0, 120), Point2(80.25f, 200.5f)}) {
+      checkRay(camera, raster, resolution);
+    }
+  }
+}
+
+TEST_CASE("T1.3 camera ray: raster row 0 is the top of the image and column 0 the left" *
+          grading(2, "raster y grows downwards: flip it (ndcY = 1 - 2 y / height); x grows to the right")) {
+  Camera camera = makeCamera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 50);
+  CameraBasis basis = cameraBasis(camera);
+  Ray top = generateCameraRay(camera, basis, {50.0f, 0.5f}, {100, 80});
+  Ray bottom = generateCameraRay(camera, basis, {50.0f, 79.5f}, {100, 80});
+  Ray left = generateCameraRay(camera, basis, {0.5f, 40.0f}, {100, 80});
+  Ray right = generateCameraRay(camera, basis, {99.5f, 40.0f}, {100, 80});
+  INFO("top " << str(top.direction) << " bottom " << str(bottom.direction));
+  CHECK(top.direction.y > 0.1f);
+  CHECK(bottom.direction.y < -0.1f);
+  INFO("left " << str(left.direction) << " right " << str(right.direction));
+  CHECK(left.direction.x < -0.1f);
+  CHECK(right.direction.x > 0.1f);
+}
+
+TEST_CASE("T1.3 camera ray: non-square images keep square pixels (aspect = width / height)" *
+          grading(3, "scale the horizontal extent by aspect = width / height (as floats), never the "
+                     "vertical one; vfov is the vertical field of view")) {
+  Camera camera = makeCamera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 40);
+  for (IVec2 resolution : {IVec2(400, 100), IVec2(100, 400), IVec2(641, 479), IVec2(3, 2)}) {
+    for (Point2 raster : {Point2(0, 0), Point2(float(resolution.x), float(resolution.y) * 0.5f),
+                          Point2(float(resolution.x) * 0.5f, float(resolution.y))}) {
+      checkRay(camera, raster, resolution);
+    }
+    // One pixel step subtends the same angle across and down at the centre.
+    CameraBasis basis = cameraBasis(camera);
+    Point2 c = Point2(resolution) * 0.5f;
+    Vec3 d0 = generateCameraRay(camera, basis, c, resolution).direction;
+    Vec3 dx = generateCameraRay(camera, basis, c + Point2(1, 0), resolution).direction;
+    Vec3 dy = generateCameraRay(camera, basis, c + Point2(0, 1), resolution).direction;
+    CAPTURE(resolution.x);
+    CAPTURE(resolution.y);
+    CHECK(std::acos(std::min(1.0f, glm::dot(d0, dx))) ==
+          doctest::Approx(std::acos(std::min(1.0f, glm::dot(d0, dy)))).epsilon(1e-2));
+  }
+}
+
+TEST_CASE("T1.3 camera ray: extreme fields of view (0.001 and 179.9 degrees) stay finite and exact" *
+          grading(2, "use tan(radians(vfov) / 2); keep the image plane at distance 1 and normalise the "
+                     "direction last, so huge and tiny tangents both work")) {
+  for (float vfov : {0.001f, 1.0f, 120.0f, 179.9f}) {
+    Camera camera = makeCamera({1, 2, 3}, {1, 2, 0}, {0, 1, 0}, vfov);
+    for (Point2 raster : {Point2(0, 0), Point2(200, 150), Point2(400, 300), Point2(37.5f, 280)}) {
+      checkRay(camera, raster, {400, 300}, 1e-5);
+    }
+  }
+}
+
+TEST_CASE("T1.3 camera ray: half-pixel offset — pixel centres, not corners, are sampled at u = (0.5, 0.5)" *
+          grading(2, "raster position = pixel + u already includes the half pixel: do not add 0.5 again "
+                     "in generateCameraRay, and do not subtract it")) {
+  // With an odd resolution the middle pixel's centre is the image centre.
+  Camera camera = makeCamera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60);
+  CameraBasis basis = cameraBasis(camera);
+  Ray centre = generateCameraRay(camera, basis, pixelSamplePosition({2, 1}, Vec2(0.5f)), {5, 3});
+  INFO("direction " << str(centre.direction));
+  CHECK(near(centre.direction, Vec3(0, 0, -1), 1e-6f));
+  // Symmetric pixels look symmetrically.
+  Ray a = generateCameraRay(camera, basis, pixelSamplePosition({0, 0}, Vec2(0.5f)), {4, 2});
+  Ray b = generateCameraRay(camera, basis, pixelSamplePosition({3, 1}, Vec2(0.5f)), {4, 2});
+  INFO("pixel (0,0) " << str(a.direction) << " pixel (3,1) " << str(b.direction));
+  CHECK(near(a.direction, Vec3(-b.direction.x, -b.direction.y, b.direction.z), 1e-6f));
+  checkRay(camera, pixelSamplePosition({0, 0}, Vec2(0.5f)), {4, 2});
+}

@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# End-to-end checks of the `pathlab` command line, as a user runs it.
+# usage: test_cli.sh PATHLAB PATHLAB_ALL_STUBS INPUTS_DIR
+set -u
+pathlab=$(realpath "$1")
+stubs=$(realpath "$2")
+inputs=$(realpath "$3")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
+
+# --- renders -------------------------------------------------------------
+"$pathlab" -q -s 2 -d 80x60 -o "$work/default.png" && [[ -s $work/default.png ]] \
+  && pass || fail "default scene does not render to PNG"
+"$pathlab" -q -s 3 -r 64 48 -t 1 --seed 5 -o "$work/one.exr" && "$pathlab" -q -s 3 -r 64 48 -t 2 --seed 5 -o "$work/two.exr" \
+  && cmp -s "$work/one.exr" "$work/two.exr" && pass || fail "1-thread and 2-thread EXR renders differ"
+out=$("$pathlab" -s 2 -d 64x48 -o "$work/stats.png" 2>/dev/null)
+grep -q "samples/s" <<< "$out" && grep -q "rays/s" <<< "$out" && pass || fail "render summary lacks samples/s and rays/s: $out"
+out=$("$pathlab" -q -s 2 -d 64x48 -o "$work/again.exr" --ref "$work/one.exr" 2>&1)
+grep -q "RMSE" <<< "$out" && grep -q "relMSE" <<< "$out" && pass || fail "--ref does not print RMSE and relMSE: $out"
+out=$("$pathlab" -q -s 1 -d 32x24 --integrator normals -o "$work/normals.png" 2>&1) && pass || fail "normals integrator: $out"
+"$pathlab" --help > "$work/help.txt" && grep -q -- "--seed" "$work/help.txt" && pass || fail "--help"
+
+# Every task on the student stubs: still renders and exits 0, and says
+# which TODOs are missing.
+err=$("$stubs" -q -s 1 -d 32x24 -o "$work/stubs.png" 2>&1 >/dev/null)
+[[ $? -eq 0 && -s $work/stubs.png ]] && grep -q "task 1 not implemented: tasks/01-camera-rays/camera_rays.cpp:" <<< "$err" \
+  && pass || fail "all-stubs render: $err"
+"$stubs" debug --task 2 --view normals -d 32x24 -o "$work/stub-normals.png" >/dev/null 2>&1 && pass || fail "all-stubs debug view"
+
+# Ctrl-C writes the image rendered so far and exits 130.
+"$pathlab" -s 1000000 -d 160x120 -o "$work/partial.exr" >/dev/null 2>"$work/partial.err" &
+pid=$!
+sleep 1
+kill -INT $pid
+wait $pid
+rc=$?
+[[ $rc -eq 130 && -s $work/partial.exr ]] && grep -q "interrupted" "$work/partial.err" \
+  && pass || fail "SIGINT: exit $rc, $(cat "$work/partial.err")"
+
+# --- debugger views --------------------------------------------------------
+views=$("$pathlab" debug --list | awk '{print $2 " " $4}')
+[[ $(wc -l <<< "$views") -ge 5 ]] && pass || fail "debug --list: $views"
+while read -r task view; do
+  "$pathlab" debug --task "$task" --view "$view" -d 64x48 -o "$work/view-$task-$view.png" >/dev/null \
+    && [[ -s $work/view-$task-$view.png ]] && pass || fail "debug --task $task --view $view"
+done <<< "$views"
+err=$("$pathlab" debug --task 2 --view nope 2>&1 >/dev/null)
+[[ $? -eq 1 ]] && grep -q "views: normals" <<< "$err" && pass || fail "unknown view: $err"
+
+# --- bad input: one line on stderr naming the problem, exit code 1 --------
+cd "$work" || exit 1
+mkdir a-folder
+while IFS='|' read -r file flags fragment; do
+  [[ -z $file || $file == \#* ]] && continue
+  file=$(xargs <<< "$file")
+  flags=$(xargs <<< "$flags")
+  fragment=$(sed 's/^ *//; s/ *$//' <<< "$fragment")
+  args=()
+  [[ $file != - ]] && args+=("$inputs/$file")
+  # shellcheck disable=SC2206
+  [[ -n $flags ]] && args+=($flags)
+  timeout 20 "$pathlab" -q -s 1 -d 16x12 "${args[@]}" >/dev/null 2>"$work/err.txt"
+  rc=$?
+  lines=$(wc -l < "$work/err.txt")
+  if [[ $rc -ne 1 ]]; then
+    fail "$file $flags: exit code $rc, expected 1: $(head -3 "$work/err.txt")"
+  elif [[ $lines -ne 1 ]]; then
+    fail "$file $flags: $lines lines on stderr, expected 1: $(head -3 "$work/err.txt")"
+  elif ! grep -qF -- "$fragment" "$work/err.txt"; then
+    fail "$file $flags: error lacks \"$fragment\": $(cat "$work/err.txt")"
+  elif [[ $file != - ]] && ! grep -qF -- "$file" "$work/err.txt"; then
+    fail "$file: error does not name the file: $(cat "$work/err.txt")"
+  else
+    pass
+  fi
+done < "$inputs/catalog.txt"
+"$pathlab" -q a-folder 2>"$work/err.txt"
+[[ $? -eq 1 ]] && grep -q "is a directory" "$work/err.txt" && pass || fail "a folder as scene: $(cat "$work/err.txt")"
+
+echo "$passed passed, $failed failed"
+[[ $failed -eq 0 ]]

@@ -1,0 +1,217 @@
+// Framework tests: scene loading and its error messages, reproducible
+// rendering, image I/O, random numbers. Linked with the reference tasks.
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "check.h"
+#include "pathlab/error.h"
+#include "pathlab/image.h"
+#include "pathlab/random.h"
+#include "pathlab/render.h"
+#include "pathlab/scene_io.h"
+
+using namespace pathlab;
+using namespace pathlab::test;
+
+namespace {
+
+// The one-line error a scene text produces, or "" when it loads.
+std::string loadError(const std::string& json) {
+  try {
+    loadSceneFromJson(json, "test.json", ".");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool bitIdentical(const Image& a, const Image& b) {
+  return a.width == b.width && a.height == b.height &&
+         std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size() * sizeof(Color)) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("scene: the embedded default scene is the Cornell box with two spheres") {
+  Scene scene = defaultScene();
+  CHECK(scene.meshes.size() == 6);
+  CHECK(scene.spheres.size() == 2);
+  CHECK(scene.triangleCount() == 12);
+  CHECK(scene.primitives.size() == 14);
+  int emissive = 0;
+  for (const Material& m : scene.materials) emissive += m.isEmissive();
+  CHECK(emissive == 1);
+}
+
+TEST_CASE("scene: a minimal scene is a few lines and every field has a default") {
+  Scene scene = loadSceneFromJson(R"({"spheres": [{"radius": 2}]})", "min.json", ".");
+  REQUIRE(scene.spheres.size() == 1);
+  CHECK(scene.spheres[0].radius == 2.0f);
+  CHECK(scene.materials.size() == 1);  // the implicit "default" material
+  CHECK(scene.render.width == 400);
+  CHECK(scene.render.samplesPerPixel == 16);
+  CHECK(loadError("{}") == "");
+}
+
+TEST_CASE("scene: errors name the file, the line or field, and what was expected") {
+  SUBCASE("bad JSON gives line and column") {
+    std::string e = loadError("{\n  \"spheres\": [\n    {\"radius\": 1,}\n  ]\n}");
+    CHECK(e.rfind("test.json:3:", 0) == 0);
+    CHECK(e.find("invalid JSON") != std::string::npos);
+  }
+  SUBCASE("truncated JSON") { CHECK(loadError("{\"spheres\": [").find("invalid JSON") != std::string::npos); }
+  SUBCASE("unknown key with a suggestion") {
+    std::string e = loadError(R"({"spheres": [{"raduis": 1}]})");
+    CHECK(e == "test.json: spheres[0]: unknown key \"raduis\" (did you mean \"radius\"?)");
+  }
+  SUBCASE("unknown top-level key") {
+    CHECK(loadError(R"({"camrea": {}})").find("did you mean \"camera\"") != std::string::npos);
+  }
+  SUBCASE("wrong type") {
+    CHECK(loadError(R"({"spheres": [{"radius": "big"}]})") ==
+          "test.json: spheres[0].radius: expected a number, got string \"big\"");
+  }
+  SUBCASE("negative radius") {
+    CHECK(loadError(R"({"spheres": [{"radius": -0.5}]})") ==
+          "test.json: spheres[0].radius: expected a positive number, got number -0.5");
+  }
+  SUBCASE("number too large for a float") {
+    CHECK(loadError(R"({"spheres": [{"center": [0, 1e39, 0]}]})") ==
+          "test.json: spheres[0].center[1]: expected a finite number, got 1e+39");
+  }
+  SUBCASE("number too large for JSON") {
+    CHECK(loadError(R"({"spheres": [{"center": [0, 1e999, 0]}]})") ==
+          "test.json: invalid JSON: number overflow parsing '1e999'");
+  }
+  SUBCASE("zero spp") {
+    CHECK(loadError(R"({"render": {"spp": 0}})") ==
+          "test.json: render.spp: expected an integer in [1, 1048576], got 0");
+  }
+  SUBCASE("fractional spp") {
+    CHECK(loadError(R"({"render": {"spp": 2.5}})").find("expected an integer") != std::string::npos);
+  }
+  SUBCASE("absurd resolution") {
+    CHECK(loadError(R"({"render": {"width": 1000000, "height": 1000000}})").find("render.width") != std::string::npos);
+  }
+  SUBCASE("unknown material") {
+    std::string e = loadError(R"({"materials": {"red": {}}, "spheres": [{"material": "blue"}]})");
+    CHECK(e == "test.json: spheres[0].material: unknown material \"blue\" (defined: \"red\")");
+  }
+  SUBCASE("albedo above one") {
+    CHECK(loadError(R"({"materials": {"m": {"albedo": [1.2, 0, 0]}}})").find("materials.m.albedo") != std::string::npos);
+  }
+  SUBCASE("missing OBJ names the path it tried") {
+    std::string e = loadError(R"({"meshes": [{"obj": "nowhere/bunny.obj"}]})");
+    CHECK(e.find("meshes[0].obj: cannot open OBJ file \"nowhere/bunny.obj\"") != std::string::npos);
+  }
+  SUBCASE("triangle index out of range") {
+    CHECK(loadError(R"({"meshes": [{"positions": [[0,0,0],[1,0,0],[0,1,0]], "triangles": [[0,1,3]]}]})")
+              .find("meshes[0].triangles[0]") != std::string::npos);
+  }
+  SUBCASE("zero-area mesh") {
+    CHECK(loadError(R"({"meshes": [{"positions": [[0,0,0],[1,0,0],[2,0,0]], "triangles": [[0,1,2]]}]})")
+              .find("zero area") != std::string::npos);
+  }
+  SUBCASE("camera looking at itself") {
+    CHECK(loadError(R"({"camera": {"position": [1,2,3], "look_at": [1,2,3]}})").find("camera.look_at") != std::string::npos);
+  }
+  SUBCASE("field of view out of range") {
+    CHECK(loadError(R"({"camera": {"vfov": 180}})").find("camera.vfov") != std::string::npos);
+  }
+}
+
+TEST_CASE("scene: OBJ meshes load with transforms, relative to the scene file") {
+  auto dir = std::filesystem::temp_directory_path() / "pathlab-test-obj";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "quad.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+  std::ofstream(dir / "scene.json") << R"({"meshes": [{"obj": "quad.obj", "transform": {"scale": 2, "translate": [0, 0, -3]}}]})";
+  Scene scene = loadScene((dir / "scene.json").string());
+  REQUIRE(scene.meshes.size() == 1);
+  CHECK(scene.meshes[0].triangles.size() == 2);
+  Vec3 lo(kInfinity), hi(-kInfinity);
+  for (const Point3& p : scene.meshes[0].positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  CHECK(near(lo, Vec3(0, 0, -3), 1e-6f));
+  CHECK(near(hi, Vec3(2, 2, -3), 1e-6f));
+}
+
+TEST_CASE("render: 1 and 2 threads, and any tile size, give bit-identical images") {
+  Scene scene = defaultScene();
+  scene.render.width = 64;
+  scene.render.height = 48;
+  scene.render.samplesPerPixel = 5;
+  RenderOptions options;
+  options.progress = false;
+  options.threads = 1;
+  Image one = render(scene, options).image;
+  options.threads = 2;
+  Image two = render(scene, options).image;
+  options.tileSize = 7;
+  Image oddTiles = render(scene, options).image;
+  CHECK(bitIdentical(one, two));
+  CHECK(bitIdentical(one, oddTiles));
+  scene.render.seed = 1;
+  CHECK_FALSE(bitIdentical(one, render(scene, options).image));  // the seed matters
+}
+
+TEST_CASE("render: a cancelled render stops early and says how far it got") {
+  Scene scene = defaultScene();
+  scene.render.samplesPerPixel = 64;
+  std::atomic<bool> cancel{true};
+  RenderOptions options;
+  options.progress = false;
+  options.cancel = &cancel;
+  RenderResult result = render(scene, options);
+  CHECK(result.stats.interrupted);
+  CHECK(result.stats.completedSpp == 0);
+}
+
+TEST_CASE("image: EXR round-trips exactly, PNG within one 8-bit step") {
+  Image image(5, 3);
+  for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = Color(0.1f * float(i), 0.5f, 3.0f);
+  auto dir = std::filesystem::temp_directory_path();
+  writeImage(image, (dir / "pathlab-test.exr").string());
+  Image exr = readImage((dir / "pathlab-test.exr").string());
+  CHECK(bitIdentical(image, exr));
+  writeImage(image, (dir / "pathlab-test.png").string());
+  Image png = readImage((dir / "pathlab-test.png").string());
+  REQUIRE(png.width == 5);
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      float expected = std::min(1.0f, image.pixels[i][c]);
+      CHECK(std::abs(linearToSrgb(png.pixels[i][c]) - linearToSrgb(expected)) <= 0.5f / 255.0f + 1e-6f);
+    }
+  }
+  CHECK_THROWS_AS(readImage((dir / "no-such-image.exr").string()), Error);
+  CHECK_THROWS_AS(writeImage(image, (dir / "x.unknown").string()), Error);
+}
+
+TEST_CASE("random: the sampler is uniform in [0, 1) and independent across dimensions and pixels") {
+  // Chi-square over 64 bins with 640k draws: the statistic's mean is 63 and
+  // its standard deviation 11.2; 150 is p < 1e-9, so no false failures.
+  constexpr int kBins = 64, kDraws = 10000;
+  std::vector<int> counts(kBins, 0);
+  double productSum = 0.0;
+  for (uint32_t pixel = 0; pixel < 64; ++pixel) {
+    for (uint32_t s = 0; s < kDraws / 2; ++s) {
+      Sampler sampler(pixel, s, 7);
+      float a = sampler.next1D(), b = sampler.next1D();
+      REQUIRE(a >= 0.0f);
+      REQUIRE(a < 1.0f);
+      counts[size_t(a * kBins)]++;
+      counts[size_t(b * kBins)]++;
+      productSum += (a - 0.5) * (b - 0.5);
+    }
+  }
+  double n = 0;
+  for (int c : counts) n += c;
+  double chi2 = 0.0;
+  for (int c : counts) chi2 += (c - n / kBins) * (c - n / kBins) / (n / kBins);
+  CHECK(chi2 < 150.0);
+  // Correlation of consecutive dimensions: standard error 1/sqrt(n/2).
+  CHECK(std::abs(productSum / (n / 2) * 12.0) < 6.0 / std::sqrt(n / 2));
+  Sampler a(1, 2, 3), b(1, 2, 3);
+  CHECK(a.next1D() == b.next1D());
+}

@@ -1,0 +1,53 @@
+// Helpers for precise comparisons in the suites: double-precision oracles,
+// vector closeness with the values printed on failure, seeded randomness.
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "pathlab/math.h"
+
+namespace pathlab::test {
+
+using DVec3 = glm::dvec3;
+
+inline std::string str(const Vec3& v) {
+  std::ostringstream s;
+  s.precision(9);
+  s << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+  return s.str();
+}
+
+inline bool near(const Vec3& a, const Vec3& b, float tolerance) {
+  return std::abs(a.x - b.x) <= tolerance && std::abs(a.y - b.y) <= tolerance && std::abs(a.z - b.z) <= tolerance;
+}
+
+inline bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// A seeded generator: every suite is deterministic, run after run.
+class Random {
+ public:
+  explicit Random(uint32_t seed) : engine_(seed) {}
+  double uniform(double a = 0.0, double b = 1.0) { return std::uniform_real_distribution<double>(a, b)(engine_); }
+  DVec3 unitVector() {
+    double z = uniform(-1.0, 1.0), phi = uniform(0.0, 2.0 * M_PI), r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    return {r * std::cos(phi), r * std::sin(phi), z};
+  }
+  DVec3 inCube(double half) { return {uniform(-half, half), uniform(-half, half), uniform(-half, half)}; }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+// Path of the course's shared data (models, scenes): $PATHLAB_SHARED_DIR, else ../shared.
+inline std::string sharedPath(const std::string& relative) {
+  const char* dir = std::getenv("PATHLAB_SHARED_DIR");
+  return std::string(dir ? dir : PATHLAB_DEFAULT_SHARED_DIR) + "/" + relative;
+}
+
+}  // namespace pathlab::test

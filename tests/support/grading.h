@@ -1,0 +1,26 @@
+// Autograder conventions shared by every suite.
+//
+// Each TEST_CASE carries its points and a one-line hint naming the likely
+// mistake:
+//
+//   TEST_CASE("T2.1 triangle: ..." * pathlab::test::grading(3, "hint ..."))
+//
+// The listener in listener.cpp prints the hint under a failing test and a
+// score line at the end ("SCORE 17/20 points").
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <string>
+
+namespace pathlab::test {
+
+// doctest keeps the description string by pointer, so grading() stores the
+// text for the life of the program.
+const char* gradingText(int points, const char* hint);
+
+inline doctest::description grading(int points, const char* hint) {
+  return doctest::description(gradingText(points, hint));
+}
+
+}  // namespace pathlab::test
