@@ -81,12 +81,14 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
         for (int x = tile.begin.x; x < tile.end.x; ++x) {
           const uint32_t pixelIndex = uint32_t(y) * uint32_t(width) + uint32_t(x);
           Color& pixelSum = sum[pixelIndex];
+          context.pixel = {x, y};
           for (int s = passBegin; s < passEnd; ++s) {
             Sampler sampler(pixelIndex, uint32_t(s), settings.seed);
             Point2 raster = pixelSamplePosition({x, y}, sampler.next2D());
             Ray ray = generateCameraRay(scene.camera, basis, raster, resolution);
             ++context.rays;
-            Color radiance = traceRadiance(context, options.integrator, ray, sampler);
+            Color radiance = options.radiance ? options.radiance(context, ray, sampler)
+                                              : traceRadiance(context, options.integrator, ray, sampler);
             if (isFinite(radiance)) {
               pixelSum += radiance;
             } else {

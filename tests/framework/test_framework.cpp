@@ -168,6 +168,28 @@ TEST_CASE("render: a cancelled render stops early and says how far it got") {
   CHECK(result.stats.completedSpp == 0);
 }
 
+TEST_CASE("render: NaN and Inf samples are counted, located and left out, never clamped") {
+  Scene scene = defaultScene();
+  scene.render.width = 20;
+  scene.render.height = 10;
+  scene.render.samplesPerPixel = 4;
+  RenderOptions options;
+  options.progress = false;
+  options.threads = 2;
+  options.radiance = [](TraceContext& context, const Ray&, Sampler&) -> Color {
+    if (context.pixel == IVec2(7, 3)) return Color(std::nanf(""), 1.0f, 1.0f);
+    if (context.pixel == IVec2(2, 8)) return Color(kInfinity);
+    return Color(5.0f);  // above 1: must not be clamped
+  };
+  RenderResult result = render(scene, options);
+  CHECK(result.stats.nonFiniteSamples == 8);
+  REQUIRE(result.stats.firstNonFinitePixel.has_value());
+  CHECK(*result.stats.firstNonFinitePixel == IVec2(7, 3));  // first in scanline order
+  CHECK(result.image.at(7, 3) == Color(0.0f));
+  CHECK(result.image.at(0, 0) == Color(5.0f));
+  CHECK(result.stats.completedSpp == 4);
+}
+
 TEST_CASE("image: EXR round-trips exactly, PNG within one 8-bit step") {
   Image image(5, 3);
   for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = Color(0.1f * float(i), 0.5f, 3.0f);

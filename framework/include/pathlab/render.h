@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -25,12 +26,19 @@ enum class Integrator {
 std::optional<Integrator> integratorFromName(const std::string& name);
 const char* integratorName(Integrator integrator);
 
+struct TraceContext;
+
+// Radiance along a camera ray; replaces the integrator when set (tests and
+// debugger views use it to render any per-sample quantity).
+using RadianceFunction = std::function<Color(TraceContext& context, const Ray& ray, Sampler& sampler)>;
+
 struct RenderOptions {
   Integrator integrator = Integrator::Preview;
   int threads = 0;    // 0: all hardware threads
   int tileSize = 16;
   bool progress = true;
   const std::atomic<bool>* cancel = nullptr;  // set from a signal handler to stop early
+  RadianceFunction radiance;                  // optional override of the integrator
 };
 
 struct RenderStats {
@@ -51,6 +59,7 @@ struct RenderResult {
 // Per-thread state an integrator may use; counts rays for the statistics.
 struct TraceContext {
   const Scene& scene;
+  IVec2 pixel{0, 0};  // the pixel being rendered
   uint64_t rays = 0;
 };
 
