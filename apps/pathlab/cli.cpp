@@ -10,6 +10,7 @@
 
 #include "pathlab/debug_views.h"
 #include "pathlab/error.h"
+#include "pathlab/progress.h"
 #include "pathlab/render.h"
 #include "pathlab/scene_io.h"
 #include "pathlab/tasks/placeholders.h"
@@ -44,14 +45,6 @@ struct DebugArgs {
   std::optional<int> threads;
   bool list = false;
 };
-
-std::string formatRate(double perSecond) {
-  char buffer[32];
-  if (perSecond >= 1e6) std::snprintf(buffer, sizeof buffer, "%.2fM", perSecond / 1e6);
-  else if (perSecond >= 1e3) std::snprintf(buffer, sizeof buffer, "%.1fk", perSecond / 1e3);
-  else std::snprintf(buffer, sizeof buffer, "%.0f", perSecond);
-  return buffer;
-}
 
 Scene loadSceneArg(const std::string& path) { return path.empty() ? defaultScene() : loadScene(path); }
 

@@ -7,7 +7,6 @@
 #include <string>
 
 namespace pathlab {
-namespace {
 
 std::string formatRate(double perSecond) {
   char buffer[32];
@@ -16,8 +15,6 @@ std::string formatRate(double perSecond) {
   else std::snprintf(buffer, sizeof buffer, "%.0f", perSecond);
   return buffer;
 }
-
-}  // namespace
 
 bool ProgressBar::stderrIsTerminal() { return isatty(STDERR_FILENO) == 1; }
 

@@ -5,9 +5,13 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <string>
 #include <thread>
 
 namespace pathlab {
+
+// A rate with a k/M suffix, e.g. "8.45M".
+std::string formatRate(double perSecond);
 
 class ProgressBar {
  public:
