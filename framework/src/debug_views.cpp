@@ -6,6 +6,7 @@ std::vector<DebugView> allDebugViews() {
   std::vector<DebugView> views;
   addCameraRayViews(views);
   addIntersectionViews(views);
+  addBvhViews(views);
   return views;
 }
 

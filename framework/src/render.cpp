@@ -7,7 +7,6 @@
 
 #include "pathlab/parallel.h"
 #include "pathlab/progress.h"
-#include "pathlab/scene_intersect.h"
 
 namespace pathlab {
 
@@ -35,7 +34,7 @@ Color background(const Scene& scene) {
 
 Color traceRadiance(TraceContext& context, Integrator integrator, const Ray& ray, Sampler& /*sampler*/) {
   const Scene& scene = context.scene;
-  std::optional<Hit> hit = intersectBruteForce(scene, ray, Interval{0.0f, kInfinity});
+  std::optional<Hit> hit = context.accelerator.intersect(ray, Interval{0.0f, kInfinity});
   switch (integrator) {
     case Integrator::Preview: {
       // An "eye light" at the camera: enough to recognise shapes and colours
@@ -58,6 +57,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
   const int width = settings.width, height = settings.height;
   const IVec2 resolution{width, height};
   const CameraBasis basis = cameraBasis(scene.camera);
+  const Accelerator accelerator(scene);
 
   std::vector<Color> sum(size_t(width) * size_t(height), Color(0.0f));
   std::vector<int> count(sum.size(), 0);
@@ -75,7 +75,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     if (options.cancel && options.cancel->load()) break;
     const int passEnd = std::min(settings.samplesPerPixel, passBegin + passSize);
     forEachTile(width, height, options.tileSize, options.threads, [&](const Tile& tile) {
-      TraceContext context{scene};
+      TraceContext context{scene, accelerator};
       uint64_t tileSamples = 0;
       for (int y = tile.begin.y; y < tile.end.y; ++y) {
         for (int x = tile.begin.x; x < tile.end.x; ++x) {
@@ -129,6 +129,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     stats.firstNonFinitePixel = IVec2(int(p % uint64_t(width)), int(p / uint64_t(width)));
   }
   stats.completedSpp = minCount;
+  stats.buildSeconds = accelerator.buildSeconds();
   stats.interrupted = minCount < settings.samplesPerPixel;
   return result;
 }

@@ -14,7 +14,7 @@
 namespace pathlab {
 namespace {
 
-Image directionsView(const DebugViewRequest& request) {
+DebugOutput directionsView(const DebugViewRequest& request) {
   const Camera& camera = request.scene.camera;
   const CameraBasis basis = cameraBasis(camera);
   const IVec2 resolution{request.width, request.height};
@@ -26,10 +26,10 @@ Image directionsView(const DebugViewRequest& request) {
     Vec3 display = glm::clamp(0.5f * (ray.direction + Vec3(1.0f)), 0.0f, 1.0f);
     image.at(x, y) = {srgbToLinear(display.x), srgbToLinear(display.y), srgbToLinear(display.z)};
   });
-  return image;
+  return {image, ""};
 }
 
-Image samplesView(const DebugViewRequest& request) {
+DebugOutput samplesView(const DebugViewRequest& request) {
   constexpr int kPixels = 4;  // a kPixels x kPixels neighbourhood
   const int cell = std::max(16, std::min(request.width, request.height) / kPixels);
   const int renderWidth = request.scene.render.width, renderHeight = request.scene.render.height;
@@ -57,7 +57,7 @@ Image samplesView(const DebugViewRequest& request) {
       }
     }
   }
-  return image;
+  return {image, ""};
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // Task 2's visual debugger (students don't edit this file: it shows what
 // their intersection.cpp does). One camera ray per pixel centre, closest hit
-// over all primitives.
+// through the scene's BVH (brute force while task 3 is undone).
 //   normals       shading normal as colour 0.5 + 0.5 n (black: no hit)
 //   depth         hit distance, near = bright, far = dark (blue: no hit)
 //   primitive-id  one colour per primitive (black: no hit)
@@ -11,7 +11,7 @@
 #include "pathlab/debug_views.h"
 #include "pathlab/draw.h"
 #include "pathlab/parallel.h"
-#include "pathlab/scene_intersect.h"
+#include "pathlab/accelerator.h"
 #include "pathlab/tasks/camera_rays.h"
 
 namespace pathlab {
@@ -22,11 +22,11 @@ std::vector<std::optional<Hit>> primaryHits(const DebugViewRequest& request) {
   const Camera& camera = request.scene.camera;
   const CameraBasis basis = cameraBasis(camera);
   const IVec2 resolution{request.width, request.height};
+  const Accelerator accelerator(request.scene);
   std::vector<std::optional<Hit>> hits(size_t(request.width) * size_t(request.height));
   forEachPixel(request.width, request.height, request.threads, [&](int x, int y) {
     Ray ray = generateCameraRay(camera, basis, Point2(float(x) + 0.5f, float(y) + 0.5f), resolution);
-    hits[size_t(y) * size_t(request.width) + size_t(x)] =
-        intersectBruteForce(request.scene, ray, Interval{0.0f, kInfinity});
+    hits[size_t(y) * size_t(request.width) + size_t(x)] = accelerator.intersect(ray, Interval{0.0f, kInfinity});
   });
   return hits;
 }
@@ -36,16 +36,16 @@ Color display(Vec3 v) {
   return {srgbToLinear(v.x), srgbToLinear(v.y), srgbToLinear(v.z)};
 }
 
-Image normalsView(const DebugViewRequest& request) {
+DebugOutput normalsView(const DebugViewRequest& request) {
   auto hits = primaryHits(request);
   Image image(request.width, request.height);
   for (size_t i = 0; i < hits.size(); ++i) {
     if (hits[i]) image.pixels[i] = display(0.5f * (hits[i]->shadingNormal + Vec3(1.0f)));
   }
-  return image;
+  return {image, ""};
 }
 
-Image depthView(const DebugViewRequest& request) {
+DebugOutput depthView(const DebugViewRequest& request) {
   auto hits = primaryHits(request);
   float nearest = kInfinity, farthest = 0.0f;
   for (const auto& hit : hits) {
@@ -57,16 +57,16 @@ Image depthView(const DebugViewRequest& request) {
     float s = farthest > nearest ? (hits[i]->t - nearest) / (farthest - nearest) : 0.0f;
     image.pixels[i] = display(Vec3(1.0f - 0.85f * s));
   }
-  return image;
+  return {image, ""};
 }
 
-Image primitiveIdView(const DebugViewRequest& request) {
+DebugOutput primitiveIdView(const DebugViewRequest& request) {
   auto hits = primaryHits(request);
   Image image(request.width, request.height);
   for (size_t i = 0; i < hits.size(); ++i) {
     if (hits[i]) image.pixels[i] = display(idColor(hits[i]->primitive));
   }
-  return image;
+  return {image, ""};
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // Meshes built in code for the suites: only what a test needs.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <utility>
 #include <vector>

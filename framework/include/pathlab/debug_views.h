@@ -18,13 +18,20 @@ struct DebugViewRequest {
   int height = 0;
   IVec2 pixel{-1, -1};  // inspected pixel; (-1, -1) means the image centre
   int threads = 0;
+  int depth = 3;        // tree depth, for views that show one level of a hierarchy
+};
+
+// What a view produces: a picture, and optionally a few lines of numbers.
+struct DebugOutput {
+  Image image;
+  std::string report;
 };
 
 struct DebugView {
   int task = 0;
   std::string name;
   std::string description;
-  std::function<Image(const DebugViewRequest&)> render;
+  std::function<DebugOutput(const DebugViewRequest&)> render;
 };
 
 // Every view of every task, in task order.
@@ -33,5 +40,6 @@ std::vector<DebugView> allDebugViews();
 // Each task's debugger.cpp provides one of these.
 void addCameraRayViews(std::vector<DebugView>& views);     // tasks/01-camera-rays/debugger.cpp
 void addIntersectionViews(std::vector<DebugView>& views);  // tasks/02-intersection/debugger.cpp
+void addBvhViews(std::vector<DebugView>& views);           // tasks/03-bvh/debugger.cpp
 
 }  // namespace pathlab

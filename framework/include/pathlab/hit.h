@@ -7,6 +7,15 @@
 
 namespace pathlab {
 
+// Where a ray meets one primitive: its parameter, the barycentrics of p1 and
+// p2 for triangles (0 for spheres), and the primitive's index in the scene.
+struct PrimitiveHit {
+  float t = kInfinity;
+  float b1 = 0.0f;
+  float b2 = 0.0f;
+  uint32_t primitive = 0;
+};
+
 struct Hit {
   float t = kInfinity;       // ray parameter of the hit
   Point3 point{0.0f};        // world-space hit position

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "pathlab/accelerator.h"
 #include "pathlab/image.h"
 #include "pathlab/random.h"
 #include "pathlab/ray.h"
@@ -48,6 +49,7 @@ struct RenderStats {
   uint64_t nonFiniteSamples = 0;  // NaN or Inf samples, left out of the image
   std::optional<IVec2> firstNonFinitePixel;  // in scanline order
   int completedSpp = 0;           // every pixel has at least this many samples
+  double buildSeconds = 0.0;      // acceleration structure build
   bool interrupted = false;
 };
 
@@ -59,6 +61,7 @@ struct RenderResult {
 // Per-thread state an integrator may use; counts rays for the statistics.
 struct TraceContext {
   const Scene& scene;
+  const Accelerator& accelerator;
   IVec2 pixel{0, 0};  // the pixel being rendered
   uint64_t rays = 0;
 };

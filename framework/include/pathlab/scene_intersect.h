@@ -10,14 +10,6 @@
 
 namespace pathlab {
 
-// t (and barycentrics for triangles) of one primitive, without the surface record.
-struct PrimitiveHit {
-  float t = kInfinity;
-  float b1 = 0.0f;
-  float b2 = 0.0f;
-  uint32_t primitive = 0;
-};
-
 std::optional<PrimitiveHit> intersectPrimitive(const Scene& scene, uint32_t primitive,
                                                const Ray& ray, Interval range);
 

@@ -1,0 +1,57 @@
+// Ray queries against a whole scene through task 3's BVH. If the BVH is
+// missing (task 3 not done) or breaks its invariants, the accelerator says so
+// once and falls back to brute force, so a student's mistake never crashes
+// the renderer.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "pathlab/hit.h"
+#include "pathlab/leaf_geometry.h"
+#include "pathlab/scene.h"
+#include "pathlab/tasks/bvh.h"
+
+namespace pathlab {
+
+// "" when `bvh` is a well-formed tree over `primitiveCount` primitives, else
+// the first broken rule (children after parents, siblings adjacent, leaf
+// ranges in bounds, every primitive exactly once, leaf size, child boxes
+// inside their parent).
+std::string validateBvh(const Bvh& bvh, size_t primitiveCount, const std::vector<Aabb>* bounds = nullptr);
+
+// SAH cost of a tree: sum over nodes of area(node)/area(root) times
+// (1 for an interior node, count for a leaf). Comparable between builders.
+double sahCost(const Bvh& bvh);
+
+// Shape of a tree, for the debugger and the benchmark.
+struct BvhStatistics {
+  size_t nodes = 0;
+  size_t leaves = 0;
+  uint32_t maxDepth = 0;
+  std::vector<size_t> leafSizes;  // leafSizes[k] = number of leaves with k primitives
+  double sahCost = 0.0;
+};
+BvhStatistics bvhStatistics(const Bvh& bvh);
+std::string formatBvhStatistics(const BvhStatistics& statistics);
+
+class Accelerator {
+ public:
+  explicit Accelerator(const Scene& scene);
+
+  std::optional<Hit> intersect(const Ray& ray, Interval range, TraversalStats* stats = nullptr) const;
+  bool occluded(const Ray& ray, Interval range, TraversalStats* stats = nullptr) const;
+
+  bool usesBvh() const { return usesBvh_; }
+  const Bvh& bvh() const { return bvh_; }
+  double buildSeconds() const { return buildSeconds_; }
+
+ private:
+  const Scene& scene_;
+  Bvh bvh_;
+  LeafGeometry geometry_;
+  bool usesBvh_ = false;
+  double buildSeconds_ = 0.0;
+};
+
+}  // namespace pathlab

@@ -1,0 +1,56 @@
+// The geometry of every primitive copied into one flat array, in the order
+// of a BVH's leaves, so a leaf's primitives sit next to each other in memory.
+// A traversal tests "slot" i of a leaf; the hit names the scene primitive.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "pathlab/aabb.h"
+#include "pathlab/hit.h"
+#include "pathlab/scene.h"
+#include "pathlab/tasks/intersection.h"
+
+namespace pathlab {
+
+class LeafGeometry {
+ public:
+  LeafGeometry() = default;
+  // Slot i holds scene primitive order[i].
+  LeafGeometry(const Scene& scene, std::span<const uint32_t> order);
+
+  uint32_t size() const { return uint32_t(slots_.size()); }
+  uint32_t primitive(uint32_t slot) const { return slots_[slot].primitive; }
+
+  // The hit of `ray` with the primitive in `slot`, within `range` (task 2's tests).
+  std::optional<PrimitiveHit> intersect(uint32_t slot, const Ray& ray, Interval range) const {
+    const Slot& s = slots_[slot];
+    if (s.isSphere) {
+      std::optional<float> t = intersectSphere(ray, range, s.a, s.b.x);
+      if (!t || !range.contains(*t)) return std::nullopt;
+      return PrimitiveHit{*t, 0.0f, 0.0f, s.primitive};
+    }
+    std::optional<TriangleHit> hit = intersectTriangle(ray, range, s.a, s.b, s.c);
+    if (!hit || !range.contains(hit->t)) return std::nullopt;  // guards against out-of-range answers
+    return PrimitiveHit{hit->t, hit->b1, hit->b2, s.primitive};
+  }
+
+ private:
+  // 48 bytes: a triangle's three vertices, or a sphere's centre (a) and radius (b.x).
+  struct Slot {
+    Point3 a;            // 12
+    uint32_t primitive;  //  4: index into Scene::primitives
+    Point3 b;            // 12
+    uint32_t isSphere;   //  4
+    Point3 c;            // 12
+    uint32_t unused;     //  4
+  };
+  static_assert(sizeof(Slot) == 48);
+  std::vector<Slot> slots_;
+};
+
+// Bounds of every scene primitive, indexed like Scene::primitives.
+std::vector<Aabb> primitiveBounds(const Scene& scene);
+
+}  // namespace pathlab

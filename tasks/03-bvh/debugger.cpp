@@ -1,0 +1,117 @@
+// Task 3's visual debugger (students don't edit this file: it shows what
+// their bvh.cpp does). One camera ray per pixel centre.
+//   heatmap  box tests per ray as colour, with a legend and the image mean
+//   boxes    the boxes of the tree at --depth N drawn over the scene
+// Both print the build statistics (nodes, depth, leaf sizes, SAH cost).
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "pathlab/accelerator.h"
+#include "pathlab/debug_views.h"
+#include "pathlab/draw.h"
+#include "pathlab/parallel.h"
+#include "pathlab/tasks/camera_rays.h"
+
+namespace pathlab {
+namespace {
+
+std::string buildReport(const Accelerator& accelerator) {
+  if (!accelerator.usesBvh()) return "no usable BVH (task 3 not done?): brute-force intersection\n";
+  char line[96];
+  std::snprintf(line, sizeof line, "built in %.1f ms\n", accelerator.buildSeconds() * 1e3);
+  return formatBvhStatistics(bvhStatistics(accelerator.bvh())) + line;
+}
+
+Color display(float r, float g, float b) { return {srgbToLinear(r), srgbToLinear(g), srgbToLinear(b)}; }
+
+DebugOutput heatmapView(const DebugViewRequest& request) {
+  const Accelerator accelerator(request.scene);
+  const Camera& camera = request.scene.camera;
+  const CameraBasis basis = cameraBasis(camera);
+  const int width = request.width, height = request.height;
+  std::vector<TraversalStats> stats(size_t(width) * size_t(height));
+  forEachPixel(width, height, request.threads, [&](int x, int y) {
+    Ray ray = generateCameraRay(camera, basis, Point2(float(x) + 0.5f, float(y) + 0.5f), {width, height});
+    accelerator.intersect(ray, Interval{0.0f, kInfinity}, &stats[size_t(y) * size_t(width) + size_t(x)]);
+  });
+  double boxSum = 0.0, nodeSum = 0.0, primitiveSum = 0.0;
+  uint32_t maxBoxes = 1;
+  for (const TraversalStats& s : stats) {
+    boxSum += s.boxTests, nodeSum += s.nodesVisited, primitiveSum += s.primitiveTests;
+    maxBoxes = std::max(maxBoxes, s.boxTests);
+  }
+  const double n = double(stats.size());
+
+  constexpr int kLegend = 44;
+  Image image(width, height + kLegend, display(0.08f, 0.08f, 0.08f));
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      image.at(x, y) = colorMap(float(stats[size_t(y) * size_t(width) + size_t(x)].boxTests) / float(maxBoxes));
+  // Legend: the colour bar from 0 to the maximum, and the mean.
+  const int barLeft = 8, barRight = width - 8, barTop = height + 6;
+  for (int x = barLeft; x < barRight; ++x) {
+    fillRect(image, Point2(float(x), float(barTop)), Point2(float(x + 1), float(barTop + 10)),
+             colorMap(float(x - barLeft) / float(barRight - barLeft - 1)));
+  }
+  const Color text = display(0.95f, 0.95f, 0.95f);
+  drawText(image, Point2(float(barLeft), float(barTop + 15)), "0", text, 2);
+  std::string maxLabel = std::to_string(maxBoxes);
+  drawText(image, Point2(float(barRight - 12 * int(maxLabel.size())), float(barTop + 15)), maxLabel, text, 2);
+  char caption[64];
+  std::snprintf(caption, sizeof caption, "BOX TESTS/RAY MEAN %.1f", boxSum / n);
+  drawText(image, Point2(float(width / 2 - 6 * int(std::string(caption).size())), float(barTop + 15)), caption, text, 2);
+
+  char report[256];
+  std::snprintf(report, sizeof report,
+                "per ray: %.1f box tests (max %u), %.1f nodes visited, %.1f primitive tests\n", boxSum / n,
+                maxBoxes, nodeSum / n, primitiveSum / n);
+  return {image, buildReport(accelerator) + report};
+}
+
+DebugOutput boxesView(const DebugViewRequest& request) {
+  const Accelerator accelerator(request.scene);
+  const Scene& scene = request.scene;
+  const CameraBasis basis = cameraBasis(scene.camera);
+  const int width = request.width, height = request.height;
+  // The scene, dimmed, as the eye-light preview sees it.
+  Image image(width, height);
+  forEachPixel(width, height, request.threads, [&](int x, int y) {
+    Ray ray = generateCameraRay(scene.camera, basis, Point2(float(x) + 0.5f, float(y) + 0.5f), {width, height});
+    if (auto hit = accelerator.intersect(ray, Interval{0.0f, kInfinity})) {
+      float cosine = std::abs(glm::dot(hit->shadingNormal, ray.direction));
+      image.at(x, y) = 0.35f * scene.materials[hit->material].albedo * cosine;
+    }
+  });
+  const Bvh& bvh = accelerator.bvh();
+  const CameraProjection projection(scene.camera, {width, height});
+  size_t drawn = 0;
+  if (!bvh.nodes.empty()) {
+    // Nodes at the chosen depth in colour; leaves that end above it in grey.
+    std::vector<std::pair<uint32_t, int>> stack = {{0, 0}};
+    while (!stack.empty()) {
+      auto [i, depth] = stack.back();
+      stack.pop_back();
+      const BvhNode& node = bvh.nodes[i];
+      if (depth == request.depth || node.isLeaf()) {
+        projection.drawBox(image, node.bounds, depth == request.depth ? idColor(i) : Color(0.3f));
+        ++drawn;
+        continue;
+      }
+      stack.push_back({node.leftOrFirst, depth + 1});
+      stack.push_back({node.leftOrFirst + 1, depth + 1});
+    }
+  }
+  drawText(image, Point2(6, 6), "DEPTH " + std::to_string(request.depth), display(0.95f, 0.95f, 0.95f), 2);
+  return {image, buildReport(accelerator) + "drew " + std::to_string(drawn) + " boxes at depth " +
+                     std::to_string(request.depth) + "\n"};
+}
+
+}  // namespace
+
+void addBvhViews(std::vector<DebugView>& views) {
+  views.push_back({3, "heatmap", "box tests per camera ray as colour, legend and mean", heatmapView});
+  views.push_back({3, "boxes", "BVH boxes at --depth N over the scene, build statistics", boxesView});
+}
+
+}  // namespace pathlab
