@@ -143,22 +143,37 @@ class Builder {
   Bvh& bvh_;
 };
 
+// The slab test, t = (box - origin) * (1 / direction), kept small enough to
+// inline into the traversal loops. (box * inv - origin * inv would save a
+// subtraction but turns inf - inf into NaN for rays strictly inside a slab.)
+struct RayBoxTest {
+  Point3 origin;
+  Vec3 inverseDirection;
+
+  RayBoxTest(const Ray& ray, const Vec3& inverse) : origin(ray.origin), inverseDirection(inverse) {}
+
+  // Entry t, or +inf for a miss (cheaper than an optional in the inner loop).
+  float entry(const Aabb& box, float tMin, float tMax) const {
+    for (int axis = 0; axis < 3; ++axis) {
+      const float t0 = (box.min[axis] - origin[axis]) * inverseDirection[axis];
+      const float t1 = (box.max[axis] - origin[axis]) * inverseDirection[axis];
+      // A ray lying in a slab plane gives 0 * inf = NaN: that axis sets no
+      // limit, so NaN must reach the comparisons below, which then ignore it.
+      const float near = (t0 < t1 || t0 != t0) ? t0 : t1;
+      const float far = ((t0 > t1 || t0 != t0) ? t0 : t1) * kWidenExit;
+      tMin = near > tMin ? near : tMin;
+      tMax = far < tMax ? far : tMax;
+    }
+    return tMin <= tMax ? tMin : kInfinity;
+  }
+};
+
 }  // namespace
 
 std::optional<float> intersectBox(const Aabb& box, const Ray& ray, const Vec3& inverseDirection, Interval range) {
-  float tEntry = range.min, tExit = range.max;
-  for (int axis = 0; axis < 3; ++axis) {
-    const float t0 = (box.min[axis] - ray.origin[axis]) * inverseDirection[axis];
-    const float t1 = (box.max[axis] - ray.origin[axis]) * inverseDirection[axis];
-    // A ray lying in a slab plane gives 0 * inf = NaN: that axis sets no
-    // limit, so NaN must reach the comparisons below, which then ignore it.
-    const float near = (t0 < t1 || t0 != t0) ? t0 : t1;
-    const float far = ((t0 > t1 || t0 != t0) ? t0 : t1) * kWidenExit;
-    tEntry = near > tEntry ? near : tEntry;
-    tExit = far < tExit ? far : tExit;
-  }
-  if (tEntry > tExit) return std::nullopt;
-  return tEntry;
+  const float t = RayBoxTest(ray, inverseDirection).entry(box, range.min, range.max);
+  if (t == kInfinity) return std::nullopt;
+  return t;
 }
 
 Bvh buildBvh(std::span<const Aabb> primitiveBounds) {
@@ -170,9 +185,9 @@ Bvh buildBvh(std::span<const Aabb> primitiveBounds) {
 std::optional<PrimitiveHit> intersectClosest(const Bvh& bvh, const LeafGeometry& geometry, const Ray& ray,
                                              Interval range, TraversalStats* stats) {
   if (bvh.nodes.empty()) return std::nullopt;
-  const Vec3 inverseDirection = 1.0f / ray.direction;
+  const RayBoxTest boxTest(ray, 1.0f / ray.direction);
   if (stats) ++stats->boxTests;
-  if (!intersectBox(bvh.nodes[0].bounds, ray, inverseDirection, range)) return std::nullopt;
+  if (boxTest.entry(bvh.nodes[0].bounds, range.min, range.max) == kInfinity) return std::nullopt;
 
   struct Pending {
     uint32_t node;
@@ -196,17 +211,13 @@ std::optional<PrimitiveHit> intersectClosest(const Bvh& bvh, const LeafGeometry&
     } else {
       // Test both children; go to the nearer, keep the farther for later.
       uint32_t near = node.leftOrFirst, far = near + 1;
-      std::optional<float> tNear = intersectBox(bvh.nodes[near].bounds, ray, inverseDirection, range);
-      std::optional<float> tFar = intersectBox(bvh.nodes[far].bounds, ray, inverseDirection, range);
+      float tNear = boxTest.entry(bvh.nodes[near].bounds, range.min, range.max);
+      float tFar = boxTest.entry(bvh.nodes[far].bounds, range.min, range.max);
       if (stats) stats->boxTests += 2;
-      if (tNear && tFar) {
-        if (*tFar < *tNear) std::swap(near, far), std::swap(tNear, tFar);
-        stack[size++] = {far, *tFar};
+      if (tFar < tNear) std::swap(near, far), std::swap(tNear, tFar);
+      if (tNear != kInfinity) {
+        if (tFar != kInfinity) stack[size++] = {far, tFar};
         index = near;
-        continue;
-      }
-      if (tNear || tFar) {
-        index = tNear ? near : far;
         continue;
       }
     }
@@ -225,25 +236,39 @@ std::optional<PrimitiveHit> intersectClosest(const Bvh& bvh, const LeafGeometry&
 bool intersectAny(const Bvh& bvh, const LeafGeometry& geometry, const Ray& ray, Interval range,
                   TraversalStats* stats) {
   if (bvh.nodes.empty()) return false;
-  const Vec3 inverseDirection = 1.0f / ray.direction;
-  std::array<uint32_t, kMaxBvhDepth + 1> stack;
+  const RayBoxTest boxTest(ray, 1.0f / ray.direction);
+  if (stats) ++stats->boxTests;
+  if (boxTest.entry(bvh.nodes[0].bounds, range.min, range.max) == kInfinity) return false;
+  // The closest-hit loop without ordering or culling: any hit ends it.
+  std::array<uint32_t, kMaxBvhDepth> stack;
   int size = 0;
-  stack[size++] = 0;
-  while (size > 0) {
-    const BvhNode& node = bvh.nodes[stack[--size]];
-    if (stats) ++stats->nodesVisited, ++stats->boxTests;
-    if (!intersectBox(node.bounds, ray, inverseDirection, range)) continue;
+  uint32_t index = 0;
+  while (true) {
+    const BvhNode& node = bvh.nodes[index];
+    if (stats) ++stats->nodesVisited;
     if (node.isLeaf()) {
       for (uint32_t slot = node.leftOrFirst; slot < node.leftOrFirst + node.count; ++slot) {
         if (stats) ++stats->primitiveTests;
-        if (geometry.intersect(slot, ray, range)) return true;  // any hit will do
+        if (geometry.intersect(slot, ray, range)) return true;
       }
     } else {
-      stack[size++] = node.leftOrFirst + 1;
-      stack[size++] = node.leftOrFirst;
+      const uint32_t left = node.leftOrFirst;
+      const bool hitLeft = boxTest.entry(bvh.nodes[left].bounds, range.min, range.max) != kInfinity;
+      const bool hitRight = boxTest.entry(bvh.nodes[left + 1].bounds, range.min, range.max) != kInfinity;
+      if (stats) stats->boxTests += 2;
+      if (hitLeft) {
+        if (hitRight) stack[size++] = left + 1;
+        index = left;
+        continue;
+      }
+      if (hitRight) {
+        index = left + 1;
+        continue;
+      }
     }
+    if (size == 0) return false;
+    index = stack[--size];
   }
-  return false;
 }
 
 }  // namespace pathlab

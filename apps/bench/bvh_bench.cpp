@@ -1,0 +1,282 @@
+#include "bvh_bench.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <thread>
+#include <vector>
+
+#include "pathlab/accelerator.h"
+#include "pathlab/error.h"
+#include "pathlab/parallel.h"
+#include "pathlab/random.h"
+#include "pathlab/scene_io.h"
+#include "pathlab/tasks/bvh.h"
+#ifdef PATHLAB_HAVE_EMBREE
+#include "embree_scene.h"
+#endif
+
+namespace pathlab::bench {
+namespace {
+
+using Json = nlohmann::json;
+constexpr int kImageSize = 512;  // primary rays: one per pixel of a 512 x 512 view
+constexpr int kRepeats = 3;      // timings are the median of three runs
+
+// A bumpy sphere of 2 x 200 x 256 = 102,400 triangles, for machines without
+// the course's bunny.
+TriangleMesh generatedMesh() {
+  constexpr int kRings = 200, kSegments = 256;
+  TriangleMesh mesh;
+  mesh.name = "generated bumpy sphere";
+  for (int i = 0; i <= kRings; ++i) {
+    const float theta = kPi * float(i) / kRings;
+    for (int j = 0; j < kSegments; ++j) {
+      const float phi = 2.0f * kPi * float(j) / kSegments;
+      const float r = 1.0f + 0.08f * std::sin(7.0f * theta) * std::cos(5.0f * phi) +
+                      0.03f * std::sin(23.0f * theta + 3.0f * phi);
+      mesh.positions.emplace_back(r * std::sin(theta) * std::cos(phi), r * std::cos(theta),
+                                  r * std::sin(theta) * std::sin(phi));
+    }
+  }
+  auto index = [](int i, int j) { return uint32_t(i * kSegments + (j % kSegments)); };
+  for (int i = 0; i < kRings; ++i)
+    for (int j = 0; j < kSegments; ++j) {
+      mesh.triangles.emplace_back(index(i, j), index(i + 1, j), index(i + 1, j + 1));
+      mesh.triangles.emplace_back(index(i, j), index(i + 1, j + 1), index(i, j + 1));
+    }
+  return mesh;
+}
+
+Scene loadMesh(const std::string& requested, std::string& description) {
+  std::string path = requested;
+  if (path.empty()) {
+    const char* shared = std::getenv("PATHLAB_SHARED_DIR");
+    path = std::string(shared ? shared : PATHLAB_DEFAULT_SHARED_DIR) + "/models/stanford-bunny.obj";
+    if (!std::filesystem::exists(path)) {
+      std::fprintf(stderr, "no bunny at %s: using a generated mesh\n", path.c_str());
+      Scene scene;
+      scene.materials.push_back(Material{.name = "default"});
+      scene.meshes.push_back(generatedMesh());
+      scene.indexPrimitives();
+      description = scene.meshes[0].name;
+      return scene;
+    }
+  }
+  std::string absolute = std::filesystem::absolute(path).string();
+  Json scene = {{"meshes", Json::array({Json{{"obj", absolute}}})}};
+  description = path;
+  return loadSceneFromJson(scene.dump(), path, "");
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+// Runs body(i) for i in [0, n) on `threads` threads; returns seconds.
+double timeParallel(size_t n, int threads, const std::function<void(size_t)>& body) {
+  const auto start = std::chrono::steady_clock::now();
+  std::atomic<size_t> next{0};
+  constexpr size_t kChunk = 1024;
+  auto worker = [&] {
+    for (size_t begin = next.fetch_add(kChunk); begin < n; begin = next.fetch_add(kChunk)) {
+      for (size_t i = begin; i < std::min(n, begin + kChunk); ++i) body(i);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& thread : pool) thread.join();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double mraysPerSecond(size_t n, int threads, const std::function<void(size_t)>& body) {
+  std::vector<double> seconds;
+  for (int r = 0; r < kRepeats; ++r) seconds.push_back(timeParallel(n, threads, body));
+  return double(n) / median(seconds) / 1e6;
+}
+
+struct RaySet {
+  const char* name;
+  std::vector<Ray> rays;
+  std::vector<Interval> ranges;
+  bool occlusion = false;
+};
+
+// Primary rays of a view that frames the mesh; shadow rays from their hits
+// towards a point light; diffuse rays from their hits in cosine-distributed
+// directions (incoherent).
+std::vector<RaySet> makeRaySets(const Scene& scene, const Bvh& bvh, const LeafGeometry& geometry) {
+  Aabb bounds;
+  for (const Point3& p : scene.meshes[0].positions) bounds.grow(p);
+  const Point3 center = bounds.centroid();
+  const float radius = 0.5f * glm::length(bounds.extent());
+  Camera camera;
+  camera.lookAt = center;
+  camera.position = center + glm::normalize(Vec3(0.3f, 0.4f, 1.0f)) * (2.4f * radius);
+  camera.vfovDegrees = 45.0f;
+  const Vec3 forward = glm::normalize(camera.lookAt - camera.position);
+  const Vec3 right = glm::normalize(glm::cross(forward, camera.up));
+  const Vec3 up = glm::cross(right, forward);
+  const float half = std::tan(glm::radians(camera.vfovDegrees) * 0.5f);
+  const Point3 light = center + Vec3(0.5f, 2.0f, 0.8f) * (2.0f * radius);
+
+  RaySet primary{"primary", {}, {}, false}, shadow{"shadow", {}, {}, true}, diffuse{"diffuse", {}, {}, false};
+  for (int y = 0; y < kImageSize; ++y) {
+    for (int x = 0; x < kImageSize; ++x) {
+      const float sx = (2.0f * (float(x) + 0.5f) / kImageSize - 1.0f) * half;
+      const float sy = (1.0f - 2.0f * (float(y) + 0.5f) / kImageSize) * half;
+      Ray ray{camera.position, glm::normalize(forward + sx * right + sy * up)};
+      primary.rays.push_back(ray);
+      primary.ranges.push_back({0.0f, kInfinity});
+      std::optional<PrimitiveHit> hit = intersectClosest(bvh, geometry, ray, {0.0f, kInfinity});
+      if (!hit) continue;
+      const glm::uvec3& t = scene.meshes[0].triangles[scene.primitives[hit->primitive].index];
+      const auto& p = scene.meshes[0].positions;
+      Vec3 normal = glm::normalize(glm::cross(p[t.y] - p[t.x], p[t.z] - p[t.x]));
+      if (glm::dot(normal, ray.direction) > 0.0f) normal = -normal;
+      const Point3 origin = ray.at(hit->t) + normal * (1e-4f * radius);
+      const Vec3 toLight = light - origin;
+      shadow.rays.push_back(Ray{origin, glm::normalize(toLight)});
+      shadow.ranges.push_back({0.0f, glm::length(toLight) * (1.0f - 1e-4f)});
+      // Cosine-weighted direction about the normal.
+      Sampler sampler(uint32_t(y * kImageSize + x), 0, 1);
+      const Vec2 u = sampler.next2D();
+      const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
+      const Vec3 a = std::abs(normal.x) > 0.9f ? Vec3(0, 1, 0) : Vec3(1, 0, 0);
+      const Vec3 tangent = glm::normalize(glm::cross(normal, a)), bitangent = glm::cross(normal, tangent);
+      const Vec3 direction = r * std::cos(phi) * tangent + r * std::sin(phi) * bitangent +
+                             std::sqrt(std::max(0.0f, 1.0f - u.x)) * normal;
+      diffuse.rays.push_back(Ray{origin, glm::normalize(direction)});
+      diffuse.ranges.push_back({0.0f, kInfinity});
+    }
+  }
+  return {primary, shadow, diffuse};
+}
+
+struct SetResult {
+  double reference1 = 0.0, referenceN = 0.0;
+  std::optional<double> embree1, embreeN;
+  std::optional<size_t> mismatches;
+};
+
+}  // namespace
+
+int runBvhBench(const BvhBenchOptions& options) {
+  const int threads = options.threads > 0 ? options.threads : defaultThreadCount();
+  std::string description;
+  Scene scene = loadMesh(options.mesh, description);
+  const size_t triangles = scene.triangleCount();
+  if (scene.meshes.size() != 1 || !scene.spheres.empty()) throw Error("pathlab-bench bvh: expected one triangle mesh");
+
+  // Builds: median of three, one thread each.
+  const std::vector<Aabb> bounds = primitiveBounds(scene);
+  std::vector<double> buildTimes;
+  Bvh bvh;
+  for (int r = 0; r < kRepeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    bvh = buildBvh(bounds);
+    buildTimes.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  const double buildReference = median(buildTimes);
+  const std::string problem = validateBvh(bvh, scene.primitives.size(), &bounds);
+  if (!problem.empty()) throw Error("the task-3 BVH is not valid: " + problem);
+  const LeafGeometry geometry(scene, bvh.primitives);
+
+  std::optional<double> buildEmbree;
+#ifdef PATHLAB_HAVE_EMBREE
+  std::unique_ptr<EmbreeScene> embree;
+  buildTimes.clear();
+  for (int r = 0; r < kRepeats; ++r) {
+    embree = std::make_unique<EmbreeScene>(scene.meshes[0], 1);
+    buildTimes.push_back(embree->buildSeconds());
+  }
+  buildEmbree = median(buildTimes);
+#else
+  std::fprintf(stderr, "Embree was not found when PathLab was built (install libembree-dev): skipping the comparison\n");
+#endif
+
+  std::vector<RaySet> sets = makeRaySets(scene, bvh, geometry);
+  std::vector<SetResult> results(sets.size());
+  for (size_t s = 0; s < sets.size(); ++s) {
+    const RaySet& set = sets[s];
+    SetResult& result = results[s];
+    std::vector<std::optional<PrimitiveHit>> hits(set.rays.size());
+    std::vector<uint8_t> blocked(set.rays.size());
+    auto reference = [&](size_t i) {
+      if (set.occlusion) blocked[i] = intersectAny(bvh, geometry, set.rays[i], set.ranges[i]);
+      else hits[i] = intersectClosest(bvh, geometry, set.rays[i], set.ranges[i]);
+    };
+    result.reference1 = mraysPerSecond(set.rays.size(), 1, reference);
+    result.referenceN = mraysPerSecond(set.rays.size(), threads, reference);
+#ifdef PATHLAB_HAVE_EMBREE
+    std::vector<std::optional<PrimitiveHit>> embreeHits(set.rays.size());
+    std::vector<uint8_t> embreeBlocked(set.rays.size());
+    auto withEmbree = [&](size_t i) {
+      if (set.occlusion) embreeBlocked[i] = embree->occluded(set.rays[i], set.ranges[i]);
+      else embreeHits[i] = embree->intersect(set.rays[i], set.ranges[i]);
+    };
+    result.embree1 = mraysPerSecond(set.rays.size(), 1, withEmbree);
+    result.embreeN = mraysPerSecond(set.rays.size(), threads, withEmbree);
+    // Agreement: same hit or miss; hits on different triangles count only
+    // when their distances differ too (ties on shared edges are fine).
+    size_t mismatches = 0;
+    for (size_t i = 0; i < set.rays.size(); ++i) {
+      if (set.occlusion) {
+        mismatches += blocked[i] != embreeBlocked[i];
+      } else if (hits[i].has_value() != embreeHits[i].has_value()) {
+        ++mismatches;
+      } else if (hits[i] && hits[i]->primitive != embreeHits[i]->primitive &&
+                 std::abs(hits[i]->t - embreeHits[i]->t) > 1e-4f * hits[i]->t) {
+        ++mismatches;
+      }
+    }
+    result.mismatches = mismatches;
+#endif
+  }
+
+  // Report.
+  std::printf("mesh: %s, %zu triangles\n", description.c_str(), triangles);
+  std::printf("build, 1 thread: reference %.1f ms", buildReference * 1e3);
+  if (buildEmbree) std::printf(", Embree %.1f ms (reference/Embree time %.2f)", *buildEmbree * 1e3, buildReference / *buildEmbree);
+  std::printf("\n%s", formatBvhStatistics(bvhStatistics(bvh)).c_str());
+  std::printf("%-8s %8s %8s | %-22s | %-22s | %s\n", "rays", "count", "", "1 thread: ref  Embree  ratio",
+              std::to_string(threads).append(" threads: ref  Embree  ratio").c_str(), "mismatches");
+  auto cell = [](std::optional<double> v) {
+    char b[16];
+    if (v) std::snprintf(b, sizeof b, "%7.2f", *v);
+    else std::snprintf(b, sizeof b, "%7s", "-");
+    return std::string(b);
+  };
+  Json json;
+  for (size_t s = 0; s < sets.size(); ++s) {
+    const SetResult& r = results[s];
+    std::optional<double> ratio1, ratioN;
+    if (r.embree1) ratio1 = r.reference1 / *r.embree1, ratioN = r.referenceN / *r.embreeN;
+    std::printf("%-8s %8zu %8s | %s %s %s | %s %s %s | %s\n", sets[s].name, sets[s].rays.size(), "Mrays/s",
+                cell(r.reference1).c_str(), cell(r.embree1).c_str(), cell(ratio1).c_str(), cell(r.referenceN).c_str(),
+                cell(r.embreeN).c_str(), cell(ratioN).c_str(),
+                r.mismatches ? std::to_string(*r.mismatches).c_str() : "-");
+    json[sets[s].name] = {{"reference_mrays", r.reference1},
+                          {"embree_mrays", r.embree1 ? Json(*r.embree1) : Json(nullptr)},
+                          {"ratio", ratio1 ? Json(*ratio1) : Json(nullptr)},
+                          {"mismatches", r.mismatches ? Json(*r.mismatches) : Json(nullptr)},
+                          {"reference_mrays_threads", r.referenceN},
+                          {"embree_mrays_threads", r.embreeN ? Json(*r.embreeN) : Json(nullptr)}};
+  }
+  json["build_ms_reference"] = buildReference * 1e3;
+  json["build_ms_embree"] = buildEmbree ? Json(*buildEmbree * 1e3) : Json(nullptr);
+  json["triangles"] = triangles;
+  json["threads"] = threads;
+  if (options.json) std::printf("%s\n", json.dump().c_str());
+  return 0;
+}
+
+}  // namespace pathlab::bench

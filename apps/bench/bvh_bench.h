@@ -1,0 +1,16 @@
+// `pathlab-bench bvh`: the reference BVH against Intel Embree on the same rays.
+#pragma once
+
+#include <string>
+
+namespace pathlab::bench {
+
+struct BvhBenchOptions {
+  std::string mesh;  // OBJ path; empty: the shared bunny, else a generated mesh
+  int threads = 0;   // for the multithreaded runs; 0: all cores
+  bool json = false;
+};
+
+int runBvhBench(const BvhBenchOptions& options);
+
+}  // namespace pathlab::bench
