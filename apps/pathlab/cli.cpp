@@ -135,7 +135,7 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel) {
     std::printf("%s: %dx%d, %d spp, %s integrator, tasks %s\n", args.output.c_str(), settings.width,
                 settings.height, settings.samplesPerPixel, integratorName(options.integrator),
                 PATHLAB_TASK_SUMMARY);
-    std::printf("time %.3f s, %s samples/s, %s rays/s\n", stats.seconds,
+    std::printf("time %.3f s (BVH build %.1f ms), %s samples/s, %s rays/s\n", stats.seconds, stats.buildSeconds * 1e3,
                 formatRate(double(stats.samples) / stats.seconds).c_str(),
                 formatRate(double(stats.rays) / stats.seconds).c_str());
   }

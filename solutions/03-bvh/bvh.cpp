@@ -92,42 +92,50 @@ class Builder {
     return true;
   }
 
+  // The same arithmetic as the binning in bestSplit, so partitions match the counts.
   static int binOf(const Point3& centroid, const Aabb& centroidBounds, int axis) {
-    const float extent = centroidBounds.max[axis] - centroidBounds.min[axis];
-    const int bin = int((centroid[axis] - centroidBounds.min[axis]) * (float(kBins) / extent));
-    return std::clamp(bin, 0, kBins - 1);
+    const float scale = float(kBins) / centroidBounds.extent()[axis];
+    return std::min(int((centroid[axis] - centroidBounds.min[axis]) * scale), kBins - 1);
   }
 
-  // SAH: cost(split) = C_trav + C_isect * (A_left N_left + A_right N_right) / A_node.
+  // SAH: cost(split) = C_trav + C_isect * (A_left N_left + A_right N_right) / A_node,
+  // for every boundary between the 16 bins of every axis. One pass over the
+  // primitives fills the bins of all three axes.
   Split bestSplit(const BvhNode& node, const Aabb& centroidBounds, uint32_t first, uint32_t count) const {
+    std::array<std::array<Aabb, kBins>, 3> binBounds;
+    std::array<std::array<uint32_t, kBins>, 3> binCount{};
+    const Vec3 extent = centroidBounds.extent();
+    const Vec3 scale(extent.x > 0 ? float(kBins) / extent.x : 0.0f, extent.y > 0 ? float(kBins) / extent.y : 0.0f,
+                     extent.z > 0 ? float(kBins) / extent.z : 0.0f);
+    for (uint32_t s = first; s < first + count; ++s) {
+      const uint32_t p = bvh_.primitives[s];
+      const Vec3 offset = (centroids_[p] - centroidBounds.min) * scale;
+      for (int axis = 0; axis < 3; ++axis) {
+        const int b = std::min(int(offset[axis]), kBins - 1);
+        binBounds[axis][b].grow(bounds_[p]);
+        ++binCount[axis][b];
+      }
+    }
     Split best;
     const float parentArea = node.bounds.surfaceArea();
     for (int axis = 0; axis < 3; ++axis) {
-      if (!(centroidBounds.max[axis] > centroidBounds.min[axis])) continue;  // all centroids equal here
-      std::array<Aabb, kBins> binBounds;
-      std::array<uint32_t, kBins> binCount{};
-      for (uint32_t s = first; s < first + count; ++s) {
-        const uint32_t p = bvh_.primitives[s];
-        const int b = binOf(centroids_[p], centroidBounds, axis);
-        binBounds[b].grow(bounds_[p]);
-        ++binCount[b];
-      }
+      if (!(extent[axis] > 0.0f)) continue;  // all centroids equal along this axis
       // Sweep from the right to know each suffix, then from the left.
       std::array<float, kBins> rightArea{};
       std::array<uint32_t, kBins> rightCount{};
       Aabb box;
       uint32_t n = 0;
       for (int b = kBins - 1; b > 0; --b) {
-        box.grow(binBounds[b]);
-        n += binCount[b];
+        box.grow(binBounds[axis][b]);
+        n += binCount[axis][b];
         rightArea[b] = box.surfaceArea();
         rightCount[b] = n;
       }
       box = Aabb{};
       n = 0;
       for (int b = 0; b < kBins - 1; ++b) {
-        box.grow(binBounds[b]);
-        n += binCount[b];
+        box.grow(binBounds[axis][b]);
+        n += binCount[axis][b];
         if (n == 0 || rightCount[b + 1] == 0) continue;
         const float cost = kTraversalCost + kIntersectionCost *
                                                 (box.surfaceArea() * float(n) + rightArea[b + 1] * float(rightCount[b + 1])) /
