@@ -31,7 +31,7 @@ struct RenderArgs {
   std::string output = "render.png";
   std::optional<uint64_t> seed;
   std::string reference;
-  std::string integrator = "preview";
+  std::string integrator = "path";
   bool quiet = false;
 };
 
@@ -104,15 +104,13 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel) {
   options.progress = !args.quiet;
   options.cancel = &cancel;
   auto integrator = integratorFromName(args.integrator);
-  if (!integrator) throw Error("--integrator: unknown integrator \"" + args.integrator + "\" (preview, normals)");
+  if (!integrator) throw Error("--integrator: unknown integrator \"" + args.integrator + "\" (path, direct, preview, normals)");
   options.integrator = *integrator;
   checkOutputPath(args.output);
   std::optional<Image> reference;
   if (!args.reference.empty()) reference = readImage(args.reference);
 
-  // Tasks 4–7 are not written yet: each says so once.
-  directLightingPlaceholder();
-  pathTracingPlaceholder();
+  // Tasks 6–7 are not written yet: each says so once.
   mirrorGlassPlaceholder();
   environmentPlaceholder();
 
@@ -208,7 +206,7 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel) {
   app.add_option("-o,-w,--output", render.output, "Output image: .png (display) or .exr (linear)");
   app.add_option("--seed", render.seed, "Random seed");
   app.add_option("--ref", render.reference, "Reference image: print RMSE and relMSE after the render");
-  app.add_option("--integrator", render.integrator, "preview (default) or normals");
+  app.add_option("--integrator", render.integrator, "path (default), direct (task 4 only), preview (eye light, tasks 1-3), normals");
   app.add_flag("-q,--quiet", render.quiet, "No progress bar or summary");
 
   DebugArgs debug;

@@ -7,10 +7,14 @@
 
 #include "pathlab/parallel.h"
 #include "pathlab/progress.h"
+#include "pathlab/tasks/direct_lighting.h"
+#include "pathlab/tasks/path_tracing.h"
 
 namespace pathlab {
 
 std::optional<Integrator> integratorFromName(const std::string& name) {
+  if (name == "path") return Integrator::Path;
+  if (name == "direct") return Integrator::Direct;
   if (name == "preview") return Integrator::Preview;
   if (name == "normals") return Integrator::Normals;
   return std::nullopt;
@@ -18,28 +22,30 @@ std::optional<Integrator> integratorFromName(const std::string& name) {
 
 const char* integratorName(Integrator integrator) {
   switch (integrator) {
+    case Integrator::Path: return "path";
+    case Integrator::Direct: return "direct";
     case Integrator::Preview: return "preview";
     case Integrator::Normals: return "normals";
   }
   return "?";
 }
 
-namespace {
-
-Color background(const Scene& scene) {
-  return scene.environment ? scene.environment->color * scene.environment->scale : Color(0.0f);
-}
-
-}  // namespace
-
-Color traceRadiance(TraceContext& context, Integrator integrator, const Ray& ray, Sampler& /*sampler*/) {
+Color traceRadiance(TraceContext& context, Integrator integrator, const Ray& ray, Sampler& sampler) {
+  if (integrator == Integrator::Path) return tracePath(context, ray, sampler);
   const Scene& scene = context.scene;
-  std::optional<Hit> hit = context.accelerator.intersect(ray, Interval{0.0f, kInfinity});
+  std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
   switch (integrator) {
+    case Integrator::Path: break;
+    case Integrator::Direct: {
+      if (!hit) return context.background(ray.direction);
+      const Vec3 wo = -ray.direction;
+      const Bsdf bsdf(scene.materials[hit->material], *hit, wo);
+      return emittedRadiance(scene, *hit, wo) + estimateDirectLighting(context, *hit, bsdf, wo, sampler);
+    }
     case Integrator::Preview: {
       // An "eye light" at the camera: enough to recognise shapes and colours
       // before any light transport exists.
-      if (!hit) return background(scene);
+      if (!hit) return context.background(ray.direction);
       const Material& material = scene.materials[hit->material];
       float cosine = std::abs(glm::dot(hit->shadingNormal, ray.direction));
       return material.albedo * cosine + material.emission;
@@ -58,6 +64,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
   const IVec2 resolution{width, height};
   const CameraBasis basis = cameraBasis(scene.camera);
   const Accelerator accelerator(scene);
+  const Lights lights = Lights::fromScene(scene);
 
   std::vector<Color> sum(size_t(width) * size_t(height), Color(0.0f));
   std::vector<int> count(sum.size(), 0);
@@ -75,7 +82,10 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     if (options.cancel && options.cancel->load()) break;
     const int passEnd = std::min(settings.samplesPerPixel, passBegin + passSize);
     forEachTile(width, height, options.tileSize, options.threads, [&](const Tile& tile) {
-      TraceContext context{scene, accelerator};
+      TraceContext context(scene, accelerator, lights);
+      context.lightSamples = settings.lightSamples;
+      context.maxDepth = settings.maxDepth;
+      context.russianRoulette = options.russianRoulette;
       uint64_t tileSamples = 0;
       for (int y = tile.begin.y; y < tile.end.y; ++y) {
         for (int x = tile.begin.x; x < tile.end.x; ++x) {
@@ -86,7 +96,6 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
             Sampler sampler(pixelIndex, uint32_t(s), settings.seed);
             Point2 raster = pixelSamplePosition({x, y}, sampler.next2D());
             Ray ray = generateCameraRay(scene.camera, basis, raster, resolution);
-            ++context.rays;
             Color radiance = options.radiance ? options.radiance(context, ray, sampler)
                                               : traceRadiance(context, options.integrator, ray, sampler);
             if (isFinite(radiance)) {

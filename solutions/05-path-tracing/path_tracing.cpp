@@ -1,10 +1,60 @@
-// Task 5 — placeholder. This task's student file and reference arrive with
-// its own issue; until then the renderer says once that it is missing.
-#include "pathlab/tasks/placeholders.h"
-#include "pathlab/todo.h"
+// Task 5 — path tracing (reference solution).
+#include "pathlab/tasks/path_tracing.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pathlab/bsdf.h"
+#include "pathlab/tasks/direct_lighting.h"
 
 namespace pathlab {
 
-void pathTracingPlaceholder() { PATHLAB_TODO("T5"); }
+// Cosine-weighted: a uniform point on the unit disk (concentric-free polar
+// form r = sqrt(u1)), lifted onto the hemisphere (Malley's method).
+Vec3 sampleDiffuseDirection(Vec2 u) {
+  const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;
+  return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};
+}
+
+float diffuseDirectionPdf(const Vec3& wi) { return wi.z > 0.0f ? wi.z * kInvPi : 0.0f; }
+
+Color tracePath(TraceContext& context, Ray ray, Sampler& sampler) {
+  constexpr int kRouletteFromBounce = 3;
+  const Scene& scene = context.scene;
+  Color radiance(0.0f), throughput(1.0f);
+  bool countEmission = true;  // light seen directly, or through a mirror (task 6)
+  for (int bounce = 0;; ++bounce) {
+    const std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
+    if (!hit) {
+      radiance += throughput * context.background(ray.direction);
+      break;
+    }
+    const Vec3 wo = -ray.direction;
+    // Emission found by a BSDF sample after a diffuse bounce was already
+    // counted by next-event estimation at the previous vertex.
+    if (countEmission) radiance += throughput * emittedRadiance(scene, *hit, wo);
+    if (bounce >= context.maxDepth) break;  // -m: at most maxDepth bounces
+
+    const Bsdf bsdf(scene.materials[hit->material], *hit, wo);
+    radiance += throughput * estimateDirectLighting(context, *hit, bsdf, wo, sampler);  // bounce + 1
+
+    const std::optional<BsdfSample> sample = bsdf.sample(wo, sampler.next2D());
+    if (!sample || !(sample->pdf > 0.0f)) break;
+    const float cosine = std::abs(glm::dot(sample->wi, bsdf.normal()));
+    throughput *= sample->f * (sample->isDelta ? 1.0f : cosine / sample->pdf);
+    if (!(maxComponent(throughput) > 0.0f)) break;
+    countEmission = sample->isDelta;
+
+    // Russian roulette: continue with probability q and divide by q, so the
+    // expected value is unchanged.
+    if (context.russianRoulette && bounce + 1 >= kRouletteFromBounce) {
+      const float q = std::min(0.95f, maxComponent(throughput));
+      if (sampler.next1D() >= q) break;
+      throughput /= q;
+    }
+    ray = Ray{offsetRayOrigin(hit->point, hit->geometricNormal, sample->wi), sample->wi};
+  }
+  return radiance;
+}
 
 }  // namespace pathlab

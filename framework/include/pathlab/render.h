@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "pathlab/accelerator.h"
+#include "pathlab/trace.h"
 #include "pathlab/image.h"
 #include "pathlab/random.h"
 #include "pathlab/ray.h"
@@ -20,21 +20,22 @@
 namespace pathlab {
 
 enum class Integrator {
-  Preview,  // eye light: albedo * |cos| + emission — needs tasks 1–2 only
+  Path,     // path tracing (task 5, using task 4 at every vertex)
+  Direct,   // emission + direct lighting at the first hit (task 4)
+  Preview,  // eye light: albedo * |cos| + emission — needs tasks 1–3 only
   Normals,  // shading normal as colour
 };
 
 std::optional<Integrator> integratorFromName(const std::string& name);
 const char* integratorName(Integrator integrator);
 
-struct TraceContext;
-
 // Radiance along a camera ray; replaces the integrator when set (tests and
 // debugger views use it to render any per-sample quantity).
 using RadianceFunction = std::function<Color(TraceContext& context, const Ray& ray, Sampler& sampler)>;
 
 struct RenderOptions {
-  Integrator integrator = Integrator::Preview;
+  Integrator integrator = Integrator::Path;
+  bool russianRoulette = true;
   int threads = 0;    // 0: all hardware threads
   int tileSize = 16;
   bool progress = true;
@@ -56,14 +57,6 @@ struct RenderStats {
 struct RenderResult {
   Image image;
   RenderStats stats;
-};
-
-// Per-thread state an integrator may use; counts rays for the statistics.
-struct TraceContext {
-  const Scene& scene;
-  const Accelerator& accelerator;
-  IVec2 pixel{0, 0};  // the pixel being rendered
-  uint64_t rays = 0;
 };
 
 // Radiance arriving along one camera ray, by the chosen integrator.

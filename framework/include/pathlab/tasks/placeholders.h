@@ -1,12 +1,10 @@
-// Tasks 4–7 are placeholders until their issues land: each file defines one
+// Tasks 6–7 are placeholders until their issues land: each file defines one
 // function that reports "not implemented" once. The renderer calls them at
 // start-up so every build says plainly which tasks are still missing.
 #pragma once
 
 namespace pathlab {
 
-void directLightingPlaceholder();   // tasks/04-direct-lighting/direct_lighting.cpp
-void pathTracingPlaceholder();      // tasks/05-path-tracing/path_tracing.cpp
 void mirrorGlassPlaceholder();      // tasks/06-mirror-glass/mirror_glass.cpp
 void environmentPlaceholder();      // tasks/07-environment/environment.cpp
 

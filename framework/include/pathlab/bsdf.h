@@ -1,0 +1,46 @@
+// The BSDF at a hit, in the local shading frame where the normal is +z.
+// Surfaces are two-sided: the frame's normal is flipped to the side wo
+// leaves from. The diffuse lobe is built from task 4 (f) and task 5
+// (direction sampling); mirror and glass become behaviour in task 6 and
+// reflect nothing until then.
+#pragma once
+
+#include <optional>
+
+#include "pathlab/frame.h"
+#include "pathlab/hit.h"
+#include "pathlab/scene.h"
+
+namespace pathlab {
+
+struct BsdfSample {
+  Vec3 wi{0.0f};       // world space, unit
+  Color f{0.0f};       // BSDF value (for delta lobes: the weight before dividing by pdf)
+  float pdf = 0.0f;    // solid-angle density (1 for delta lobes)
+  bool isDelta = false;
+};
+
+class Bsdf {
+ public:
+  Bsdf(const Material& material, const Hit& hit, const Vec3& wo);
+
+  // Shading normal and geometric normal, both on the side of wo.
+  const Vec3& normal() const { return frame_.n; }
+  const Vec3& geometricNormal() const { return geometricNormal_; }
+  const Frame& frame() const { return frame_; }
+  bool isDelta() const { return material_.type != MaterialType::Diffuse; }
+
+  // f(wo, wi) for world-space unit directions; 0 for delta lobes.
+  Color f(const Vec3& wo, const Vec3& wi) const;
+  // Solid-angle density of sample() choosing wi; 0 for delta lobes.
+  float pdf(const Vec3& wo, const Vec3& wi) const;
+  // wi drawn from u in [0,1)^2; nothing if no direction can be sampled.
+  std::optional<BsdfSample> sample(const Vec3& wo, Vec2 u) const;
+
+ private:
+  const Material& material_;
+  Frame frame_;
+  Vec3 geometricNormal_;
+};
+
+}  // namespace pathlab

@@ -1,0 +1,47 @@
+// What an estimator needs while tracing one sample: the scene, its BVH and
+// lights, the render settings, and per-thread counters. Estimators trace
+// rays through intersect() and occluded() so rays are counted (rays/s) and,
+// in the debugger, recorded.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "pathlab/accelerator.h"
+#include "pathlab/lights.h"
+#include "pathlab/scene.h"
+
+namespace pathlab {
+
+// One ray as the debugger records it.
+struct TracedRay {
+  Ray ray;
+  Interval range;
+  bool shadow = false;  // an occlusion query
+  bool hit = false;     // blocked (shadow) or hit something
+  float t = kInfinity;  // distance of the hit, if any
+};
+
+struct TraceContext {
+  const Scene& scene;
+  const Accelerator& accelerator;
+  const Lights& lights;
+  int lightSamples = 1;         // -l: samples per area light
+  int maxDepth = 4;             // -m: the most bounces a path may make
+  bool russianRoulette = true;  // end long paths at random (unbiased)
+  IVec2 pixel{0, 0};            // the pixel being rendered
+  uint64_t rays = 0;            // rays traced by this thread
+  std::vector<TracedRay>* log = nullptr;  // when set, every ray is recorded
+
+  TraceContext(const Scene& s, const Accelerator& a, const Lights& l) : scene(s), accelerator(a), lights(l) {}
+
+  // Closest hit within range.
+  std::optional<Hit> intersect(const Ray& ray, Interval range);
+  // Whether anything lies on the ray within range.
+  bool occluded(const Ray& ray, Interval range);
+  // Radiance arriving along a ray that leaves the scene.
+  Color background(const Vec3& direction) const;
+};
+
+}  // namespace pathlab

@@ -1,0 +1,43 @@
+#include "pathlab/bsdf.h"
+
+#include "pathlab/tasks/direct_lighting.h"
+#include "pathlab/tasks/path_tracing.h"
+
+namespace pathlab {
+
+Bsdf::Bsdf(const Material& material, const Hit& hit, const Vec3& wo) : material_(material) {
+  // Two-sided: look at the surface from the side wo leaves from.
+  const float side = glm::dot(hit.geometricNormal, wo) < 0.0f ? -1.0f : 1.0f;
+  geometricNormal_ = side * hit.geometricNormal;
+  Vec3 n = side * hit.shadingNormal;
+  if (glm::dot(n, geometricNormal_) <= 0.0f) n = geometricNormal_;  // a shading normal past the horizon
+  frame_ = Frame::fromNormal(n);
+}
+
+Color Bsdf::f(const Vec3& wo, const Vec3& wi) const {
+  if (isDelta()) return Color(0.0f);
+  // Both directions above the surface, by the shading and the geometric normal.
+  if (glm::dot(wi, frame_.n) <= 0.0f || glm::dot(wi, geometricNormal_) <= 0.0f || glm::dot(wo, frame_.n) <= 0.0f) {
+    return Color(0.0f);
+  }
+  return lambertianBrdf(material_.albedo);
+}
+
+float Bsdf::pdf(const Vec3& /*wo*/, const Vec3& wi) const {
+  if (isDelta()) return 0.0f;
+  return diffuseDirectionPdf(frame_.toLocal(wi));
+}
+
+std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, Vec2 u) const {
+  if (isDelta()) return std::nullopt;  // mirror and glass: task 6
+  const Vec3 local = sampleDiffuseDirection(u);
+  const float pdf = diffuseDirectionPdf(local);
+  if (!(pdf > 0.0f) || !(local.z > 0.0f)) return std::nullopt;
+  BsdfSample s;
+  s.wi = glm::normalize(frame_.toWorld(local));
+  s.pdf = pdf;
+  s.f = f(wo, s.wi);
+  return s;
+}
+
+}  // namespace pathlab

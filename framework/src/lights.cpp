@@ -1,0 +1,75 @@
+#include "pathlab/lights.h"
+
+#include <cmath>
+
+namespace pathlab {
+
+AreaLight AreaLight::fromMesh(const Scene& scene, uint32_t mesh) {
+  AreaLight light;
+  light.scene_ = &scene;
+  light.object_ = mesh;
+  const TriangleMesh& m = scene.meshes[mesh];
+  light.radiance_ = scene.materials[m.material].emission;
+  std::vector<float> areas;
+  for (const glm::uvec3& t : m.triangles) {
+    areas.push_back(0.5f * glm::length(glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x])));
+  }
+  light.triangles_ = Distribution1D(areas);
+  light.area_ = float(light.triangles_.total());
+  return light;
+}
+
+AreaLight AreaLight::fromSphere(const Scene& scene, uint32_t sphere) {
+  AreaLight light;
+  light.scene_ = &scene;
+  light.object_ = sphere;
+  light.isSphere_ = true;
+  const Sphere& s = scene.spheres[sphere];
+  light.radiance_ = scene.materials[s.material].emission;
+  light.area_ = 4.0f * kPi * s.radius * s.radius;
+  return light;
+}
+
+AreaSample AreaLight::sample(Vec2 u) const {
+  AreaSample result;
+  result.radiance = radiance_;
+  result.pdfArea = 1.0f / area_;
+  if (isSphere_) {
+    const Sphere& s = scene_->spheres[object_];
+    const float z = 1.0f - 2.0f * u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;
+    result.normal = Vec3(r * std::cos(phi), r * std::sin(phi), z);
+    result.point = s.center + s.radius * result.normal;
+    return result;
+  }
+  // Pick a triangle by area, then a uniform point in it (u.x is re-used).
+  float ux = 0.0f;
+  const size_t i = triangles_.sample(u.x, &ux);
+  const TriangleMesh& m = scene_->meshes[object_];
+  const glm::uvec3& t = m.triangles[i];
+  const Point3 &p0 = m.positions[t.x], &p1 = m.positions[t.y], &p2 = m.positions[t.z];
+  const float root = std::sqrt(ux);
+  const float b1 = root * (1.0f - u.y), b2 = root * u.y;
+  result.point = (1.0f - b1 - b2) * p0 + b1 * p1 + b2 * p2;
+  result.normal = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+  return result;
+}
+
+Lights Lights::fromScene(const Scene& scene) {
+  Lights lights;
+  lights.points = scene.pointLights;
+  for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
+    if (scene.materials[scene.meshes[m].material].isEmissive()) lights.areas.push_back(AreaLight::fromMesh(scene, m));
+  }
+  for (uint32_t s = 0; s < scene.spheres.size(); ++s) {
+    if (scene.materials[scene.spheres[s].material].isEmissive()) lights.areas.push_back(AreaLight::fromSphere(scene, s));
+  }
+  return lights;
+}
+
+Color emittedRadiance(const Scene& scene, const Hit& hit, const Vec3& wo) {
+  const Material& material = scene.materials[hit.material];
+  if (!material.isEmissive() || glm::dot(hit.geometricNormal, wo) <= 0.0f) return Color(0.0f);
+  return material.emission;
+}
+
+}  // namespace pathlab

@@ -1,0 +1,24 @@
+#include "pathlab/trace.h"
+
+namespace pathlab {
+
+std::optional<Hit> TraceContext::intersect(const Ray& ray, Interval range) {
+  ++rays;
+  std::optional<Hit> hit = accelerator.intersect(ray, range);
+  if (log) log->push_back({ray, range, false, hit.has_value(), hit ? hit->t : kInfinity});
+  return hit;
+}
+
+bool TraceContext::occluded(const Ray& ray, Interval range) {
+  ++rays;
+  const bool blocked = accelerator.occluded(ray, range);
+  if (log) log->push_back({ray, range, true, blocked, kInfinity});
+  return blocked;
+}
+
+Color TraceContext::background(const Vec3& /*direction*/) const {
+  // Environment maps become lights in task 7; until then the constant colour.
+  return scene.environment ? scene.environment->color * scene.environment->scale : Color(0.0f);
+}
+
+}  // namespace pathlab

@@ -1,0 +1,221 @@
+// Autograder suite for task 5 — path tracing. Known answers from physics:
+// inside a closed diffuse enclosure L = Le / (1 - rho); a point light of
+// intensity pi at the centre of a sphere of albedo 1/2 gives L = 1; an
+// albedo-1 object in a white furnace vanishes. Means are compared within 5
+// measured standard errors (false failure 5.7e-7 per check); the sampler's
+// chi-square test uses alpha = 1e-4. Seeds are fixed.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "check.h"
+#include "grading.h"
+#include "meshes.h"
+#include "pathlab/bsdf.h"
+#include "pathlab/scene_io.h"
+#include "pathlab/tasks/path_tracing.h"
+#include "render_support.h"
+#include "statistics.h"
+
+using namespace pathlab;
+using namespace pathlab::test;
+
+namespace {
+
+// A closed sphere-like mesh of radius 1 facing inwards: albedo rho, emission Le.
+Scene closedEnclosure(float rho, float Le) {
+  Scene scene;
+  uint32_t m = addMaterial(scene, Color(rho), Color(Le));
+  TriangleMesh mesh = icosphere(3, Point3(0.0f), 1.0f);
+  for (glm::uvec3& t : mesh.triangles) std::swap(t.y, t.z);  // normals point inwards
+  mesh.material = m;
+  scene.meshes.push_back(mesh);
+  return scene;
+}
+
+// Mean (green channel) of tracePath over n camera rays from `origin` in
+// uniformly random directions.
+MeanEstimate pathMean(TraceContext& context, Point3 origin, int n, uint64_t seed = 5) {
+  Random random{uint32_t(seed)};
+  MeanEstimate m;
+  for (int i = 0; i < n; ++i) {
+    Sampler sampler(uint32_t(i), 0, seed);
+    Color L = tracePath(context, Ray{origin, Vec3(random.unitVector())}, sampler);
+    m.add(L.y);
+  }
+  return m;
+}
+
+double geometricSum(double rho, int terms) {
+  double s = 0.0, p = 1.0;
+  for (int k = 0; k <= terms; ++k) s += p, p *= rho;
+  return s;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- T5.1
+
+TEST_CASE("T5.1 diffuse sampling: directions follow their pdf (chi-square, 10^6 samples)" *
+          grading(3, "the pdf must describe the sampler exactly: cosine-weighted (r = sqrt(u.x), z = sqrt(1 - "
+                     "u.x)) has p = cos(theta)/pi; it must integrate to 1 and be 0 below the surface")) {
+  constexpr int kSamples = 1000000;
+  DirectionHistogram histogram;
+  int below = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    Sampler sampler(uint32_t(i), 0, 21);
+    Vec3 w = sampleDiffuseDirection(sampler.next2D());
+    if (!(w.z >= 0.0f)) ++below;
+    histogram.add(w);
+  }
+  CHECK(below == 0);
+  CHECK(histogram.outside == 0);  // not unit length
+  auto pdf = [](const Vec3& w) { return double(diffuseDirectionPdf(w)); };
+  std::vector<double> expected = DirectionHistogram::expected(pdf, kSamples);
+  double integral = 0.0;
+  for (double e : expected) integral += e / kSamples;
+  INFO("integral of the pdf over the sphere: " << integral);
+  CHECK(integral == doctest::Approx(1.0).epsilon(0.01));
+  CHECK(diffuseDirectionPdf(Vec3(0, 0.6f, -0.8f)) == 0.0f);
+  ChiSquareResult r = chiSquareTest(histogram.counts, expected);
+  INFO("chi-square " << r.statistic << " with " << r.degreesOfFreedom << " dof: p = " << r.pValue << " "
+                     << r.failure);
+  CHECK(r.failure.empty());
+  CHECK(r.pValue > 1e-4);
+}
+
+TEST_CASE("T5.1 diffuse sampling: f cos(theta) / pdf averages to the albedo (energy conserved), never NaN" *
+          grading(2, "with cosine sampling f cos / pdf = albedo for every sample; a pdf that does not match the "
+                     "sampler, or u = 0.99999994 giving z < 0 or NaN, breaks it")) {
+  Scene scene;
+  addMaterial(scene, Color(0.7f));
+  Hit hit;
+  hit.geometricNormal = hit.shadingNormal = glm::normalize(Vec3(0.2f, 0.9f, -0.3f));
+  const Vec3 wo = glm::normalize(Vec3(0.5f, 1.0f, 0.1f));
+  const Bsdf bsdf(scene.materials[0], hit, wo);
+  MeanEstimate weight;
+  for (int i = 0; i < 100000; ++i) {
+    Sampler sampler(uint32_t(i), 0, 22);
+    auto s = bsdf.sample(wo, sampler.next2D());
+    REQUIRE(s.has_value());
+    weight.add(s->f.y * std::abs(glm::dot(s->wi, bsdf.normal())) / s->pdf);
+  }
+  INFO(weight.describe(0.7));
+  CHECK(weight.agrees(0.7));
+  for (Vec2 u : {Vec2(0.0f), Vec2(0.99999994f), Vec2(0.99999994f, 0.0f), Vec2(0.0f, 0.99999994f)}) {
+    Vec3 w = sampleDiffuseDirection(u);
+    CHECK(finite(w));
+    CHECK(w.z >= 0.0f);
+    CHECK(std::isfinite(diffuseDirectionPdf(w)));
+  }
+}
+
+// ---------------------------------------------------------------- T5.2
+
+TEST_CASE("T5.2 path tracing: inside a closed emitting enclosure L = Le / (1 - rho)" *
+          grading(4, "count emission only at the camera hit (and after delta bounces): next-event estimation "
+                     "already adds the light a diffuse bounce would find; multiply throughput by f cos / pdf")) {
+  Rig rig(closedEnclosure(0.5f, 0.5f));
+  TraceContext context = rig.context(100, 1, true);
+  MeanEstimate m = pathMean(context, Point3(0.1f, -0.2f, 0.05f), 20000);
+  const double expected = 0.5 * geometricSum(0.5, 100);  // = 1 to 1e-30
+  INFO(m.describe(expected));
+  CHECK(m.agrees(expected));
+}
+
+TEST_CASE("T5.2 path tracing: a point light of intensity pi at the centre of a closed sphere of albedo 1/2 gives 1" *
+          grading(3, "direct light from point lights at every vertex, plus the bounces: 0.5 direct + 0.5 "
+                     "indirect; dropping direct light at later vertices loses the indirect half")) {
+  for (int lights : {1, 4}) {
+    Scene scene;
+    uint32_t m = addMaterial(scene, Color(0.5f));
+    scene.spheres.push_back(Sphere{Point3(0.0f), 1.0f, m});
+    for (int i = 0; i < lights; ++i) scene.pointLights.push_back(PointLight{Point3(0.0f), Color(kPi / float(lights))});
+    Rig rig(std::move(scene));
+    TraceContext context = rig.context(100, 1, true);
+    MeanEstimate estimate = pathMean(context, Point3(0.0f), 20000);
+    CAPTURE(lights);
+    INFO(estimate.describe(1.0));
+    CHECK(estimate.agrees(1.0));
+  }
+}
+
+TEST_CASE("T5.2 path tracing: white furnace — an albedo-1 sphere in a uniform environment of 1 vanishes" *
+          grading(3, "a ray that leaves the scene adds throughput * context.background(direction); with albedo 1 "
+                     "and L_env = 1 every path must return exactly 1 — more is energy from nowhere")) {
+  for (float albedo : {1.0f, 0.8f}) {
+    Scene scene;
+    uint32_t m = addMaterial(scene, Color(albedo));
+    scene.spheres.push_back(Sphere{Point3(0.0f), 1.0f, m});
+    scene.environment = Environment{};
+    scene.environment->color = Color(albedo == 1.0f ? 1.0f : 0.5f);
+    Rig rig(std::move(scene));
+    TraceContext context = rig.context(8, 1, true);
+    Random random(23);
+    MeanEstimate m2;
+    for (int i = 0; i < 20000; ++i) {
+      DVec3 target = random.inCube(0.5);
+      Point3 origin(0.0f, 0.0f, 4.0f);
+      Sampler sampler(uint32_t(i), 0, 23);
+      m2.add(tracePath(context, Ray{origin, Vec3(glm::normalize(target - DVec3(origin)))}, sampler).y);
+    }
+    const double expected = albedo == 1.0f ? 1.0 : 0.5 * 0.8;  // every ray here hits the sphere
+    CAPTURE(albedo);
+    INFO(m2.describe(expected));
+    CHECK(m2.agrees(expected));
+  }
+}
+
+TEST_CASE("T5.2 path tracing: -m counts bounces exactly (0: emitters only, 1: direct light, ...)" *
+          grading(3, "stop when bounce >= maxDepth before adding direct light: -m 0 shows only emission, -m 1 "
+                     "adds one bounce (direct light), -m k adds k bounces")) {
+  Rig rig(closedEnclosure(0.5f, 0.5f));
+  for (int depth : {0, 1, 2, 3}) {
+    TraceContext context = rig.context(depth, 1, false);
+    MeanEstimate m = pathMean(context, Point3(0.0f), 20000, 7 + depth);
+    const double expected = 0.5 * geometricSum(0.5, depth);
+    CAPTURE(depth);
+    INFO(m.describe(expected));
+    CHECK(m.agrees(expected));
+  }
+}
+
+TEST_CASE("T5.2 path tracing: Russian roulette keeps the mean (on and off agree), energy never grows" *
+          grading(3, "after surviving with probability q divide the throughput by q; q = min(0.95, max "
+                     "component of throughput) keeps bright paths alive")) {
+  Rig rig(closedEnclosure(0.8f, 0.2f));
+  const double expected = 0.2 * geometricSum(0.8, 12);
+  TraceContext with = rig.context(12, 1, true), without = rig.context(12, 1, false);
+  MeanEstimate a = pathMean(with, Point3(0.0f), 30000, 31);
+  MeanEstimate b = pathMean(without, Point3(0.0f), 30000, 32);
+  INFO("with roulette: " << a.describe(expected));
+  INFO("without: " << b.describe(expected));
+  CHECK(a.agrees(expected));
+  CHECK(b.agrees(expected));
+  // Energy never grows: even unlimited depth stays at Le / (1 - rho) = 1.
+  TraceContext deep = rig.context(1000, 1, true);
+  MeanEstimate c = pathMean(deep, Point3(0.0f), 20000, 33);
+  INFO("depth 1000: " << c.describe(1.0));
+  CHECK(c.agrees(1.0));
+}
+
+TEST_CASE("T5.2 path tracing: no NaN or Inf in the Cornell box, at grazing angles included" *
+          grading(2, "skip samples with pdf 0, never divide by a zero cosine, and stop a path whose throughput "
+                     "is 0")) {
+  Rig rig(defaultScene());
+  TraceContext context = rig.context(8, 1, true);
+  Random random(41);
+  int bad = 0, bright = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // From inside the box, including rays skimming the walls.
+    Point3 origin(float(random.uniform(-0.99, 0.99)), float(random.uniform(0.01, 1.49)), float(random.uniform(-0.99, 0.99)));
+    DVec3 d = random.unitVector();
+    if (i % 4 == 0) d.y = 1e-4 * d.y;  // nearly parallel to the floor and ceiling
+    Sampler sampler(uint32_t(i), 0, 41);
+    Color L = tracePath(context, Ray{origin, Vec3(glm::normalize(d))}, sampler);
+    if (!finite(L)) ++bad;
+    if (maxComponent(L) > 0.0f) ++bright;
+  }
+  CHECK(bad == 0);
+  CHECK(bright > 15000);  // the box is lit: almost every path carries light
+}

@@ -1,0 +1,55 @@
+// A scene with its BVH and lights, ready for estimator tests: build the
+// Scene, then `Rig rig(std::move(scene));` and call rig.context().
+#pragma once
+
+#include <memory>
+
+#include "pathlab/accelerator.h"
+#include "pathlab/lights.h"
+#include "pathlab/trace.h"
+
+namespace pathlab::test {
+
+class Rig {
+ public:
+  explicit Rig(Scene scene) : scene_(std::make_unique<Scene>(std::move(scene))) {
+    scene_->indexPrimitives();
+    accelerator_ = std::make_unique<Accelerator>(*scene_);
+    lights_ = Lights::fromScene(*scene_);
+  }
+
+  TraceContext context(int maxDepth = 4, int lightSamples = 1, bool russianRoulette = true) const {
+    TraceContext c(*scene_, *accelerator_, lights_);
+    c.maxDepth = maxDepth;
+    c.lightSamples = lightSamples;
+    c.russianRoulette = russianRoulette;
+    return c;
+  }
+  const Scene& scene() const { return *scene_; }
+
+ private:
+  std::unique_ptr<Scene> scene_;
+  std::unique_ptr<Accelerator> accelerator_;
+  Lights lights_;
+};
+
+inline uint32_t addMaterial(Scene& scene, Color albedo, Color emission = Color(0.0f)) {
+  Material m;
+  m.name = std::to_string(scene.materials.size());
+  m.name.insert(0, 1, 'm');
+  m.albedo = albedo;
+  m.emission = emission;
+  scene.materials.push_back(m);
+  return uint32_t(scene.materials.size() - 1);
+}
+
+// A quad corner + s u + t v, facing u x v.
+inline void addQuad(Scene& scene, Point3 corner, Vec3 u, Vec3 v, uint32_t material) {
+  TriangleMesh mesh;
+  mesh.positions = {corner, corner + u, corner + u + v, corner + v};
+  mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+  mesh.material = material;
+  scene.meshes.push_back(mesh);
+}
+
+}  // namespace pathlab::test

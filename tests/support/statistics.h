@@ -1,0 +1,168 @@
+// Statistics for the autograder: means with standard errors, and Pearson's
+// chi-square goodness-of-fit test with pooling of sparse cells (as Mitsuba 3
+// and pbrt-v4 test their samplers).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "pathlab/math.h"
+
+namespace pathlab::test {
+
+// Running mean and variance (Welford), per colour channel collapsed to one
+// number by the caller.
+class MeanEstimate {
+ public:
+  void add(double x) {
+    ++n_;
+    const double delta = x - mean_;
+    mean_ += delta / double(n_);
+    m2_ += delta * (x - mean_);
+  }
+  size_t count() const { return n_; }
+  double mean() const { return mean_; }
+  double variance() const { return n_ > 1 ? m2_ / double(n_ - 1) : 0.0; }
+  double standardError() const { return n_ > 0 ? std::sqrt(variance() / double(n_)) : 0.0; }
+
+  // |mean - expected| within `sigmas` standard errors (plus a tiny absolute
+  // slack for zero-variance estimators). Five sigma: a correct estimator
+  // fails with probability 5.7e-7 per check.
+  bool agrees(double expected, double sigmas = 5.0) const {
+    return std::abs(mean_ - expected) <= sigmas * standardError() + 1e-6 * std::max(1.0, std::abs(expected));
+  }
+  std::string describe(double expected) const {
+    std::ostringstream s;
+    s << "mean " << mean_ << " +- " << standardError() << " (1 sigma, " << n_ << " samples), expected " << expected
+      << ", off by " << (standardError() > 0 ? std::abs(mean_ - expected) / standardError() : 0.0) << " sigma";
+    return s.str();
+  }
+
+ private:
+  size_t n_ = 0;
+  double mean_ = 0.0, m2_ = 0.0;
+};
+
+// Regularised upper incomplete gamma Q(a, x) (Numerical Recipes 6.2).
+inline double upperIncompleteGamma(double a, double x) {
+  if (x <= 0.0) return 1.0;
+  const double lnGammaA = std::lgamma(a);
+  if (x < a + 1.0) {  // series for P, then Q = 1 - P
+    double sum = 1.0 / a, term = sum;
+    for (int n = 1; n < 10000; ++n) {
+      term *= x / (a + n);
+      sum += term;
+      if (std::abs(term) < std::abs(sum) * 1e-15) break;
+    }
+    return 1.0 - sum * std::exp(-x + a * std::log(x) - lnGammaA);
+  }
+  // Continued fraction for Q (modified Lentz).
+  double b = x + 1.0 - a, c = 1.0 / 1e-300, d = 1.0 / b, h = d;
+  for (int i = 1; i < 10000; ++i) {
+    const double an = -i * (i - a);
+    b += 2.0;
+    d = an * d + b;
+    if (std::abs(d) < 1e-300) d = 1e-300;
+    c = b + an / c;
+    if (std::abs(c) < 1e-300) c = 1e-300;
+    d = 1.0 / d;
+    const double delta = d * c;
+    h *= delta;
+    if (std::abs(delta - 1.0) < 1e-15) break;
+  }
+  return std::exp(-x + a * std::log(x) - lnGammaA) * h;
+}
+
+struct ChiSquareResult {
+  double statistic = 0.0;
+  int degreesOfFreedom = 0;
+  double pValue = 0.0;
+  std::string failure;  // a hard failure before any statistics, or ""
+};
+
+// Pearson's test of observed counts against expected counts. Cells with an
+// expected count below 5 are pooled (sorted by expectation) until each group
+// reaches 5. Any observation in a cell whose expectation is 0 fails outright.
+inline ChiSquareResult chiSquareTest(const std::vector<double>& observed, const std::vector<double>& expected) {
+  ChiSquareResult r;
+  std::vector<size_t> order(observed.size());
+  std::iota(order.begin(), order.end(), size_t(0));
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return expected[a] < expected[b]; });
+  double pooledObserved = 0.0, pooledExpected = 0.0;
+  int groups = 0;
+  for (size_t i : order) {
+    if (expected[i] == 0.0 && observed[i] > 0.0) {
+      r.failure = "a sample landed in a cell where the pdf is zero";
+      return r;
+    }
+    if (expected[i] < 5.0) {
+      pooledObserved += observed[i];
+      pooledExpected += expected[i];
+      if (pooledExpected >= 5.0) {
+        r.statistic += (pooledObserved - pooledExpected) * (pooledObserved - pooledExpected) / pooledExpected;
+        ++groups;
+        pooledObserved = pooledExpected = 0.0;
+      }
+      continue;
+    }
+    r.statistic += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
+    ++groups;
+  }
+  if (pooledExpected > 0.0) {
+    r.statistic += (pooledObserved - pooledExpected) * (pooledObserved - pooledExpected) / std::max(pooledExpected, 1e-12);
+    ++groups;
+  }
+  r.degreesOfFreedom = groups - 1;
+  if (r.degreesOfFreedom < 1) {
+    r.failure = "fewer than one degree of freedom";
+    return r;
+  }
+  r.pValue = upperIncompleteGamma(0.5 * r.degreesOfFreedom, 0.5 * r.statistic);
+  return r;
+}
+
+// Histogram of unit directions over the equal-area map (phi in [-pi, pi],
+// cos(theta) in [-1, 1]), and the counts a solid-angle pdf predicts for
+// `samples` draws (midpoint rule on a 4 x 4 sub-grid per cell).
+struct DirectionHistogram {
+  static constexpr int kPhi = 50, kCos = 101;  // odd: no cell edge on the horizon
+  std::vector<double> counts = std::vector<double>(kPhi * kCos, 0.0);
+  int outside = 0;
+
+  void add(const Vec3& w) {
+    if (!(std::abs(glm::length(w) - 1.0f) < 1e-3f)) {
+      ++outside;
+      return;
+    }
+    const double phi = std::atan2(double(w.y), double(w.x));
+    const int i = std::clamp(int((phi + M_PI) / (2.0 * M_PI) * kPhi), 0, kPhi - 1);
+    const int j = std::clamp(int((double(w.z) + 1.0) * 0.5 * kCos), 0, kCos - 1);
+    counts[size_t(j * kPhi + i)] += 1.0;
+  }
+
+  static std::vector<double> expected(const std::function<double(const Vec3&)>& pdf, double samples) {
+    std::vector<double> result(kPhi * kCos, 0.0);
+    constexpr int kSub = 4;
+    const double dPhi = 2.0 * M_PI / kPhi, dCos = 2.0 / kCos;
+    for (int j = 0; j < kCos; ++j)
+      for (int i = 0; i < kPhi; ++i) {
+        double integral = 0.0;
+        for (int sj = 0; sj < kSub; ++sj)
+          for (int si = 0; si < kSub; ++si) {
+            const double phi = -M_PI + (i + (si + 0.5) / kSub) * dPhi;
+            const double z = -1.0 + (j + (sj + 0.5) / kSub) * dCos;
+            const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+            integral += pdf(Vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)));
+          }
+        result[size_t(j * kPhi + i)] = samples * integral * dPhi * dCos / (kSub * kSub);
+      }
+    return result;
+  }
+};
+
+}  // namespace pathlab::test
