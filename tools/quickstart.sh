@@ -10,7 +10,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config git python3 libglm-dev libopenimageio-dev doctest-dev
-          nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libembree-dev)
+          nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libpugixml-dev libembree-dev)
 
 install_packages() {
   local missing=()

@@ -7,6 +7,8 @@ std::vector<DebugView> allDebugViews() {
   addCameraRayViews(views);
   addIntersectionViews(views);
   addBvhViews(views);
+  addDirectLightingViews(views);
+  addPathTracingViews(views);
   return views;
 }
 

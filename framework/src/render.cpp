@@ -57,11 +57,29 @@ Color traceRadiance(TraceContext& context, Integrator integrator, const Ray& ray
   return Color(0.0f);
 }
 
+TraceContext makeTraceContext(const Scene& scene, const Accelerator& accelerator, const Lights& lights,
+                              const RenderOptions& options) {
+  TraceContext context(scene, accelerator, lights);
+  context.lightSamples = scene.render.lightSamples;
+  context.maxDepth = scene.render.maxDepth;
+  context.russianRoulette = options.russianRoulette;
+  return context;
+}
+
+Color renderSample(TraceContext& context, const RenderOptions& options, const CameraBasis& basis, uint32_t sample) {
+  const RenderSettings& settings = context.scene.render;
+  const IVec2 pixel = context.pixel;
+  Sampler sampler(uint32_t(pixel.y) * uint32_t(settings.width) + uint32_t(pixel.x), sample, settings.seed);
+  const Point2 raster = pixelSamplePosition(pixel, sampler.next2D());
+  const Ray ray = generateCameraRay(context.scene.camera, basis, raster, {settings.width, settings.height});
+  return options.radiance ? options.radiance(context, ray, sampler)
+                          : traceRadiance(context, options.integrator, ray, sampler);
+}
+
 RenderResult render(const Scene& scene, const RenderOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const RenderSettings& settings = scene.render;
   const int width = settings.width, height = settings.height;
-  const IVec2 resolution{width, height};
   const CameraBasis basis = cameraBasis(scene.camera);
   const Accelerator accelerator(scene);
   const Lights lights = Lights::fromScene(scene);
@@ -82,10 +100,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     if (options.cancel && options.cancel->load()) break;
     const int passEnd = std::min(settings.samplesPerPixel, passBegin + passSize);
     forEachTile(width, height, options.tileSize, options.threads, [&](const Tile& tile) {
-      TraceContext context(scene, accelerator, lights);
-      context.lightSamples = settings.lightSamples;
-      context.maxDepth = settings.maxDepth;
-      context.russianRoulette = options.russianRoulette;
+      TraceContext context = makeTraceContext(scene, accelerator, lights, options);
       uint64_t tileSamples = 0;
       for (int y = tile.begin.y; y < tile.end.y; ++y) {
         for (int x = tile.begin.x; x < tile.end.x; ++x) {
@@ -93,11 +108,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
           Color& pixelSum = sum[pixelIndex];
           context.pixel = {x, y};
           for (int s = passBegin; s < passEnd; ++s) {
-            Sampler sampler(pixelIndex, uint32_t(s), settings.seed);
-            Point2 raster = pixelSamplePosition({x, y}, sampler.next2D());
-            Ray ray = generateCameraRay(scene.camera, basis, raster, resolution);
-            Color radiance = options.radiance ? options.radiance(context, ray, sampler)
-                                              : traceRadiance(context, options.integrator, ray, sampler);
+            Color radiance = renderSample(context, options, basis, uint32_t(s));
             if (isFinite(radiance)) {
               pixelSum += radiance;
             } else {

@@ -1,5 +1,7 @@
 #include "pathlab/scene.h"
 
+#include <utility>
+
 namespace pathlab {
 
 void Scene::indexPrimitives() {
@@ -20,6 +22,15 @@ size_t Scene::triangleCount() const {
   size_t n = 0;
   for (const TriangleMesh& mesh : meshes) n += mesh.triangles.size();
   return n;
+}
+
+void transformMesh(TriangleMesh& mesh, const glm::mat4& worldFromObject) {
+  const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(worldFromObject)));
+  for (Point3& p : mesh.positions) p = Point3(worldFromObject * glm::vec4(p, 1.0f));
+  for (Vec3& n : mesh.normals) n = glm::normalize(normalMatrix * n);
+  if (glm::determinant(glm::mat3(worldFromObject)) < 0.0f) {
+    for (glm::uvec3& t : mesh.triangles) std::swap(t.y, t.z);
+  }
 }
 
 }  // namespace pathlab

@@ -253,16 +253,6 @@ glm::mat4 parseTransform(const Object& o) {
   return m;
 }
 
-void applyTransform(TriangleMesh& mesh, const glm::mat4& worldFromObject) {
-  const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(worldFromObject)));
-  for (Point3& p : mesh.positions) p = Point3(worldFromObject * glm::vec4(p, 1.0f));
-  for (Vec3& n : mesh.normals) n = glm::normalize(normalMatrix * n);
-  // A mirroring transform turns the winding inside out; keep fronts in front.
-  if (glm::determinant(glm::mat3(worldFromObject)) < 0.0f) {
-    for (glm::uvec3& t : mesh.triangles) std::swap(t.y, t.z);
-  }
-}
-
 TriangleMesh loadObj(const Object& o, const std::string& file) {
   fs::path path = fs::path(file).is_absolute() ? fs::path(file) : o.source().baseDir / file;
   if (!fs::is_regular_file(path)) {
@@ -457,7 +447,7 @@ Scene parseScene(const Source& source, const Json& root) {
         mesh = inlineMesh(o);
       }
       if (o.has("transform")) {
-        applyTransform(mesh, parseTransform(Object(source, o.at("transform"), o.field("transform"),
+        transformMesh(mesh, parseTransform(Object(source, o.at("transform"), o.field("transform"),
                                                    {"translate", "rotate", "scale"})));
       }
       for (const Point3& p : mesh.positions) {
@@ -545,9 +535,11 @@ Scene loadScene(const std::string& path) {
   if (!in) throw Error(path + ": cannot open scene file");
   std::ostringstream text;
   text << in.rdbuf();
-  const std::string ext = fs::path(path).extension().string();
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext == ".dae") return loadColladaScene(path);
   if (ext != ".json") {
-    throw Error(path + ": unknown scene format " + inQuotes(ext) + " (expected .json)");
+    throw Error(path + ": unknown scene format " + inQuotes(ext) + " (expected .json or .dae)");
   }
   return loadSceneFromJson(text.str(), path, fs::path(path).parent_path().string());
 }

@@ -137,6 +137,43 @@ TEST_CASE("scene: OBJ meshes load with transforms, relative to the scene file") 
   CHECK(near(hi, Vec3(2, 2, -3), 1e-6f));
 }
 
+TEST_CASE("scene: the course's COLLADA Cornell boxes load with their materials, lights and camera") {
+  for (const char* name : {"CBspheres_lambertian.dae", "CBspheres.dae"}) {
+    const std::string path = sharedPath(std::string("course-scenes/") + name);
+    REQUIRE(std::filesystem::exists(path));
+    Scene scene = loadScene(path);
+    CAPTURE(name);
+    CHECK(scene.meshes.size() == 6);   // floor, ceiling, three walls, the light
+    CHECK(scene.triangleCount() == 12);
+    REQUIRE(scene.spheres.size() == 2);
+    CHECK(scene.spheres[0].radius == doctest::Approx(0.3f));
+    CHECK(scene.pointLights.empty());  // the <area> light is the emissive mesh
+    int emissive = 0, mirrors = 0, glass = 0;
+    for (const TriangleMesh& m : scene.meshes) emissive += scene.materials[m.material].isEmissive();
+    for (const Sphere& sphere : scene.spheres) {
+      mirrors += scene.materials[sphere.material].type == MaterialType::Mirror;
+      glass += scene.materials[sphere.material].type == MaterialType::Glass;
+    }
+    CHECK(emissive == 1);
+    if (std::string(name) == "CBspheres.dae") {
+      CHECK(mirrors == 1);
+      CHECK(glass == 1);
+    }
+    CHECK(scene.render.width == 400);
+    CHECK(scene.render.height == 300);  // aspect ratio 1.333 from the file
+    // Z-up file: the camera looks along -y with z up, at the box's centre.
+    CHECK(near(glm::normalize(scene.camera.lookAt - scene.camera.position), Vec3(0, -1, 0), 1e-4f));
+    CHECK(scene.camera.up.z > 0.99f);
+    // The light faces down (-z): its geometric normal from the winding.
+    for (const TriangleMesh& m : scene.meshes) {
+      if (!scene.materials[m.material].isEmissive()) continue;
+      const glm::uvec3& t = m.triangles[0];
+      Vec3 n = glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]);
+      CHECK(n.z < 0.0f);
+    }
+  }
+}
+
 TEST_CASE("render: 1 and 2 threads, and any tile size, give bit-identical images") {
   Scene scene = defaultScene();
   scene.render.width = 64;

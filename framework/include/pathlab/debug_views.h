@@ -41,5 +41,7 @@ std::vector<DebugView> allDebugViews();
 void addCameraRayViews(std::vector<DebugView>& views);     // tasks/01-camera-rays/debugger.cpp
 void addIntersectionViews(std::vector<DebugView>& views);  // tasks/02-intersection/debugger.cpp
 void addBvhViews(std::vector<DebugView>& views);           // tasks/03-bvh/debugger.cpp
+void addDirectLightingViews(std::vector<DebugView>& views); // tasks/04-direct-lighting/debugger.cpp
+void addPathTracingViews(std::vector<DebugView>& views);    // tasks/05-path-tracing/debugger.cpp
 
 }  // namespace pathlab

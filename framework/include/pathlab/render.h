@@ -64,4 +64,12 @@ Color traceRadiance(TraceContext& context, Integrator integrator, const Ray& ray
 
 RenderResult render(const Scene& scene, const RenderOptions& options);
 
+// The trace context render() gives each thread.
+TraceContext makeTraceContext(const Scene& scene, const Accelerator& accelerator, const Lights& lights,
+                              const RenderOptions& options);
+
+// Sample `sample` of pixel context.pixel, exactly as render() takes it (same
+// random numbers): the debugger re-traces single pixels with it.
+Color renderSample(TraceContext& context, const RenderOptions& options, const CameraBasis& basis, uint32_t sample);
+
 }  // namespace pathlab

@@ -90,4 +90,8 @@ struct Scene {
   size_t triangleCount() const;
 };
 
+// Applies a transform to a mesh's positions and normals; a mirroring
+// transform also flips the winding, so front faces stay in front.
+void transformMesh(TriangleMesh& mesh, const glm::mat4& worldFromObject);
+
 }  // namespace pathlab

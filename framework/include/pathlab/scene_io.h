@@ -11,7 +11,11 @@
 
 namespace pathlab {
 
+// By extension: .json (PathLab's format) or .dae (COLLADA with the course's profile).
 Scene loadScene(const std::string& path);
+
+// COLLADA 1.4 with the course's CMU462 / CGL extensions.
+Scene loadColladaScene(const std::string& path);
 
 // `name` is used in messages; relative paths inside resolve against `baseDir`.
 Scene loadSceneFromJson(std::string_view text, const std::string& name, const std::string& baseDir);
