@@ -48,7 +48,7 @@ MeanEstimate estimate(TraceContext& context, const Hit& hit, const Vec3& wo, int
   const Bsdf bsdf(context.scene.materials[hit.material], hit, wo);
   MeanEstimate m;
   for (int i = 0; i < n; ++i) {
-    Sampler sampler(uint32_t(i), 0, seed);
+    Sampler sampler(uint32_t(i), 0, testSeed(seed));
     Color L = estimateDirectLighting(context, hit, bsdf, wo, sampler);
     m.add(L.y);
   }
@@ -295,7 +295,7 @@ TEST_CASE("T4.4 direct lighting: no shadow acne on a large plane lit at grazing 
     for (int i = 0; i < 500; ++i) {
       Point3 target(float(random.uniform(-20, 20) * scale), 0.37f * s, float(random.uniform(-20, 20) * scale));
       Hit hit = hitFromAbove(context, target, Vec3(0.3f * s, s, 0.1f * s));
-      Sampler sampler(uint32_t(i), 0, 3);
+      Sampler sampler(uint32_t(i), 0, testSeed(3));
       const Bsdf bsdf(context.scene.materials[hit.material], hit, Vec3(0, 1, 0));
       Color L = estimateDirectLighting(context, hit, bsdf, Vec3(0, 1, 0), sampler);
       ++points;
