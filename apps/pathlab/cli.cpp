@@ -49,9 +49,9 @@ struct DebugArgs {
 
 Scene loadSceneArg(const std::string& path) { return path.empty() ? defaultScene() : loadScene(path); }
 
-// -d WxH or -r W H into the scene's resolution.
+// -d WxH or -r W H into the scene's resolution (-r wins if both are given).
 void applyResolution(RenderSettings& settings, const std::string& wxh, const std::vector<int>& pair) {
-  if (!wxh.empty()) {
+  if (!wxh.empty() && pair.empty()) {
     std::smatch m;
     if (!std::regex_match(wxh, m, std::regex(R"((\d{1,9})[xX](\d{1,9}))"))) {
       throw Error("-d: expected WIDTHxHEIGHT such as 800x600, got \"" + wxh + "\"");
@@ -59,6 +59,7 @@ void applyResolution(RenderSettings& settings, const std::string& wxh, const std
     settings.width = std::stoi(m[1]);
     settings.height = std::stoi(m[2]);
   } else if (!pair.empty()) {
+    if (pair.size() != 2) throw Error("-r: expected two numbers, -r WIDTH HEIGHT");
     settings.width = pair[0];
     settings.height = pair[1];
   } else {
@@ -110,8 +111,7 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel) {
   std::optional<Image> reference;
   if (!args.reference.empty()) reference = readImage(args.reference);
 
-  // Tasks 6–7 are not written yet: each says so once.
-  mirrorGlassPlaceholder();
+  // Task 7 is not written yet: it says so once.
   environmentPlaceholder();
 
   RenderResult result = render(scene, options);
@@ -174,6 +174,7 @@ int runDebug(const DebugArgs& args) {
   if (args.threads) request.threads = checkedCount("-t", *args.threads, 1, 1024);
   if (args.depth) request.depth = checkedCount("--depth", *args.depth, 0, 64);
   if (!args.pixel.empty()) {
+    if (args.pixel.size() != 2) throw Error("--pixel: expected two numbers, --pixel X Y");
     request.pixel = {args.pixel[0], args.pixel[1]};
     if (request.pixel.x < 0 || request.pixel.y < 0 || request.pixel.x >= scene.render.width ||
         request.pixel.y >= scene.render.height) {
@@ -201,8 +202,10 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel) {
   app.add_option("-s,--spp", render.spp, "Samples per pixel");
   app.add_option("-l,--light-samples", render.lightSamples, "Samples per area light");
   app.add_option("-m,--max-depth", render.maxDepth, "Maximum ray depth");
-  auto* d = app.add_option("-d", render.resolution, "Resolution WIDTHxHEIGHT, e.g. 800x600");
-  app.add_option("-r", render.widthHeight, "Resolution as two numbers: -r WIDTH HEIGHT")->expected(2)->excludes(d);
+  app.add_option("-d", render.resolution, "Resolution WIDTHxHEIGHT, e.g. 800x600");
+  app.add_option("-r", render.widthHeight, "Resolution as two numbers: -r WIDTH HEIGHT")
+      ->expected(2)
+      ->allow_extra_args(false);  // exactly two values, then the scene
   app.add_option("-o,-w,--output", render.output, "Output image: .png (display) or .exr (linear)");
   app.add_option("--seed", render.seed, "Random seed");
   app.add_option("--ref", render.reference, "Reference image: print RMSE and relMSE after the render");
@@ -216,7 +219,9 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel) {
   debugCommand->add_option("scene", debug.scene, "Scene file; omit for the built-in Cornell box");
   debugCommand->add_option("-d", debug.resolution, "Resolution WIDTHxHEIGHT");
   debugCommand->add_option("-o,--output", debug.output, "Output PNG");
-  debugCommand->add_option("--pixel", debug.pixel, "Inspected pixel: --pixel X Y")->expected(2);
+  debugCommand->add_option("--pixel", debug.pixel, "Inspected pixel: --pixel X Y")
+      ->expected(2)
+      ->allow_extra_args(false);
   debugCommand->add_option("--depth", debug.depth, "Tree depth for hierarchy views (default 3)");
   debugCommand->add_option("-t,--threads", debug.threads, "Threads (default: all cores)");
   debugCommand->add_flag("--list", debug.list, "List every task's views");

@@ -1,6 +1,7 @@
 #include "pathlab/bsdf.h"
 
 #include "pathlab/tasks/direct_lighting.h"
+#include "pathlab/tasks/mirror_glass.h"
 #include "pathlab/tasks/path_tracing.h"
 
 namespace pathlab {
@@ -12,6 +13,8 @@ Bsdf::Bsdf(const Material& material, const Hit& hit, const Vec3& wo) : material_
   Vec3 n = side * hit.shadingNormal;
   if (glm::dot(n, geometricNormal_) <= 0.0f) n = geometricNormal_;  // a shading normal past the horizon
   frame_ = Frame::fromNormal(n);
+  // Glass needs to know inside from outside: the frame of the outward normal.
+  outwardFrame_ = Frame::fromNormal(side * n);
 }
 
 Color Bsdf::f(const Vec3& wo, const Vec3& wi) const {
@@ -29,7 +32,18 @@ float Bsdf::pdf(const Vec3& /*wo*/, const Vec3& wi) const {
 }
 
 std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, Vec2 u) const {
-  if (isDelta()) return std::nullopt;  // mirror and glass: task 6
+  if (isDelta()) {
+    // Glass lives in the frame of its outward normal, not the side wo is on.
+    const Frame& frame = material_.type == MaterialType::Glass ? outwardFrame_ : frame_;
+    const Vec3 woLocal = frame.toLocal(wo);
+    BsdfSample s = material_.type == MaterialType::Mirror
+                       ? sampleMirror(woLocal, material_.albedo)
+                       : sampleGlass(woLocal, material_.albedo, material_.transmittance, material_.ior, u.x);
+    if (!(glm::dot(s.wi, s.wi) > 0.0f) || !isFinite(s.wi)) return std::nullopt;
+    s.wi = glm::normalize(frame.toWorld(s.wi));
+    s.isDelta = true;
+    return s;
+  }
   const Vec3 local = sampleDiffuseDirection(u);
   const float pdf = diffuseDirectionPdf(local);
   if (!(pdf > 0.0f) || !(local.z > 0.0f)) return std::nullopt;

@@ -9,6 +9,7 @@ std::vector<DebugView> allDebugViews() {
   addBvhViews(views);
   addDirectLightingViews(views);
   addPathTracingViews(views);
+  addMirrorGlassViews(views);
   return views;
 }
 

@@ -513,7 +513,10 @@ TEST_CASE("T2.4 sphere surface point: on the sphere, with the outward unit norma
     DVec3 expectedNormal = glm::normalize(DVec3(ray.origin) + t * DVec3(ray.direction) - DVec3(center));
     CAPTURE(i);
     INFO("expected normal " << str(Vec3(expectedNormal)) << ", got " << str(s.geometricNormal));
-    CHECK(glm::length(DVec3(s.geometricNormal) - expectedNormal) < 1e-4);
+    // The hit point carries float rounding of the coordinates (~1e-7 of their
+    // size); divided by a small radius that bends the normal a little.
+    const double scale = glm::length(DVec3(ray.origin)) + glm::length(DVec3(center)) + t;
+    CHECK(glm::length(DVec3(s.geometricNormal) - expectedNormal) < 1e-5 + 4e-7 * scale / radius);
     CHECK(near(s.shadingNormal, s.geometricNormal, 1e-6f));
     double off = std::abs(glm::length(DVec3(s.point) - DVec3(center)) - radius);
     CHECK(off <= 1e-6 * (radius + glm::length(DVec3(center))));

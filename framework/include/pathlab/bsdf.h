@@ -1,8 +1,8 @@
 // The BSDF at a hit, in the local shading frame where the normal is +z.
 // Surfaces are two-sided: the frame's normal is flipped to the side wo
 // leaves from. The diffuse lobe is built from task 4 (f) and task 5
-// (direction sampling); mirror and glass become behaviour in task 6 and
-// reflect nothing until then.
+// (direction sampling); mirror and glass from task 6 (delta lobes: sampled,
+// never evaluated — f() and pdf() are 0 for them).
 #pragma once
 
 #include <optional>
@@ -14,9 +14,9 @@
 namespace pathlab {
 
 struct BsdfSample {
-  Vec3 wi{0.0f};       // world space, unit
-  Color f{0.0f};       // BSDF value (for delta lobes: the weight before dividing by pdf)
-  float pdf = 0.0f;    // solid-angle density (1 for delta lobes)
+  Vec3 wi{0.0f};       // unit
+  Color f{0.0f};       // BSDF value f(wo, wi); for a delta lobe the whole weight f cos / pdf
+  float pdf = 0.0f;    // solid-angle density; for a delta lobe the probability of the lobe chosen
   bool isDelta = false;
 };
 
@@ -40,6 +40,7 @@ class Bsdf {
  private:
   const Material& material_;
   Frame frame_;
+  Frame outwardFrame_;
   Vec3 geometricNormal_;
 };
 

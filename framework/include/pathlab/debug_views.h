@@ -43,5 +43,6 @@ void addIntersectionViews(std::vector<DebugView>& views);  // tasks/02-intersect
 void addBvhViews(std::vector<DebugView>& views);           // tasks/03-bvh/debugger.cpp
 void addDirectLightingViews(std::vector<DebugView>& views); // tasks/04-direct-lighting/debugger.cpp
 void addPathTracingViews(std::vector<DebugView>& views);    // tasks/05-path-tracing/debugger.cpp
+void addMirrorGlassViews(std::vector<DebugView>& views);    // tasks/06-mirror-glass/debugger.cpp
 
 }  // namespace pathlab

@@ -1,0 +1,254 @@
+// Autograder suite for task 6 — mirror and glass. Geometry identities are
+// checked to float precision; Fresnel lobe selection by a chi-square test
+// (alpha = 1e-4, its false-failure rate); furnace scenes within 5 measured
+// standard errors (5.7e-7). Seeds are fixed (PATHLAB_TEST_SEED varies them).
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "check.h"
+#include "grading.h"
+#include "pathlab/bsdf.h"
+#include "pathlab/tasks/mirror_glass.h"
+#include "pathlab/tasks/path_tracing.h"
+#include "render_support.h"
+#include "statistics.h"
+
+using namespace pathlab;
+using namespace pathlab::test;
+
+namespace {
+
+// Random unit directions on the outside (z > 0) or inside (z < 0).
+Vec3 randomDirection(Random& random, bool outside) {
+  DVec3 d = random.unitVector();
+  d.z = std::abs(d.z) < 1e-3 ? 1e-3 : std::abs(d.z);
+  return Vec3(glm::normalize(outside ? d : DVec3(d.x, d.y, -d.z)));
+}
+
+double sinTheta(const Vec3& w) { return std::sqrt(std::max(0.0, 1.0 - double(w.z) * double(w.z))); }
+
+// The path radiance through a sphere of `material` in a uniform environment.
+MeanEstimate furnace(const Material& material, float environment, int paths) {
+  Scene scene;
+  scene.materials.push_back(material);
+  scene.spheres.push_back(Sphere{Point3(0.0f), 1.0f, 0});
+  scene.environment = Environment{};
+  scene.environment->color = Color(environment);
+  Rig rig(std::move(scene));
+  TraceContext context = rig.context(64, 1, true);
+  Random random(61);
+  MeanEstimate m;
+  for (int i = 0; i < paths; ++i) {
+    DVec3 target = random.inCube(0.6);
+    Point3 origin(0.0f, 0.0f, 3.0f);
+    Sampler sampler(uint32_t(i), 0, testSeed(61));
+    m.add(tracePath(context, Ray{origin, Vec3(glm::normalize(target - DVec3(origin)))}, sampler).y);
+  }
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("T6.1 reflect: angle out equals angle in, same plane, unit length, reflect twice = identity" *
+          grading(2, "about the normal +z: wi = (-wo.x, -wo.y, wo.z)")) {
+  Random random(62);
+  for (int i = 0; i < 1000; ++i) {
+    Vec3 wo = randomDirection(random, i % 2 == 0);
+    Vec3 wi = reflect(wo);
+    INFO("wo " << str(wo) << " wi " << str(wi));
+    CHECK(wi.z == doctest::Approx(wo.z).epsilon(1e-6));
+    CHECK(glm::length(wi) == doctest::Approx(1.0f).epsilon(1e-6));
+    CHECK(std::abs(glm::dot(glm::cross(wo, wi), Vec3(0, 0, 1))) < 1e-5f);  // wo, wi and n coplanar
+    CHECK(glm::length(wo + wi - 2.0f * wo.z * Vec3(0, 0, 1)) < 1e-5f);
+    CHECK(near(reflect(wi), wo, 1e-6f));
+  }
+}
+
+TEST_CASE("T6.2 refract: Snell's law in both directions, and reversible" *
+          grading(3, "entering (wo.z > 0) eta = 1/ior, leaving eta = ior; sin_t = eta sin_i; wi = (-eta wo.x, "
+                     "-eta wo.y, -sign(wo.z) cos_t) lies on the other side")) {
+  Random random(63);
+  for (float ior : {1.5f, 2.4f, 1.33f}) {
+    for (int i = 0; i < 500; ++i) {
+      const bool entering = i % 2 == 0;
+      Vec3 wo = randomDirection(random, entering);
+      auto wi = refract(wo, ior);
+      if (!entering && sinTheta(wo) * ior >= 1.0) continue;  // TIR: its own test
+      CAPTURE(ior);
+      INFO("wo " << str(wo));
+      REQUIRE(wi.has_value());
+      const double nO = entering ? 1.0 : ior, nT = entering ? ior : 1.0;
+      CHECK(nO * sinTheta(wo) == doctest::Approx(nT * sinTheta(*wi)).epsilon(1e-4));
+      CHECK(glm::length(*wi) == doctest::Approx(1.0f).epsilon(1e-5));
+      CHECK(wi->z * wo.z < 0.0f);                                                // the other side
+      CHECK(std::abs(glm::dot(glm::cross(wo, *wi), Vec3(0, 0, 1))) < 1e-4f);    // same plane
+      auto back = refract(*wi, ior);
+      REQUIRE(back.has_value());
+      CHECK(near(*back, wo, 1e-4f));
+    }
+  }
+}
+
+TEST_CASE("T6.2 refract: total internal reflection exactly past the critical angle, never before" *
+          grading(2, "leaving glass, eta = ior > 1: when eta^2 (1 - cos^2) >= 1 there is no refracted ray; return "
+                     "nothing exactly then")) {
+  for (float ior : {1.5f, 1.33f, 2.4f}) {
+    const float critical = std::asin(1.0f / ior);
+    for (float offset : {1e-3f, 1e-2f, 0.2f}) {
+      const float below = critical - offset, above = critical + offset;
+      Vec3 inside(std::sin(below), 0.0f, -std::cos(below));
+      Vec3 pastCritical(std::sin(above), 0.0f, -std::cos(above));
+      CAPTURE(ior);
+      CAPTURE(offset);
+      CHECK(refract(inside, ior).has_value());
+      CHECK_FALSE(refract(pastCritical, ior).has_value());
+      // From outside there is never total internal reflection.
+      CHECK(refract(Vec3(std::sin(above), 0.0f, std::cos(above)), ior).has_value());
+    }
+  }
+}
+
+TEST_CASE("T6.2 refract: index 1 bends nothing (the ray goes straight through)" *
+          grading(1, "with ior = 1, eta = 1: wi must be exactly -wo")) {
+  Random random(64);
+  for (int i = 0; i < 200; ++i) {
+    Vec3 wo = randomDirection(random, i % 2 == 0);
+    auto wi = refract(wo, 1.0f);
+    REQUIRE(wi.has_value());
+    CHECK(near(*wi, -wo, 1e-6f));
+  }
+}
+
+TEST_CASE("T6.3 Schlick: ((ior - 1) / (ior + 1))^2 at normal incidence, rising to 1 at grazing" *
+          grading(2, "R0 = ((1 - ior) / (1 + ior))^2 and R = R0 + (1 - R0) (1 - cos)^5")) {
+  for (float ior : {1.0f, 1.33f, 1.5f, 2.4f}) {
+    const double r0 = std::pow((ior - 1.0) / (ior + 1.0), 2.0);
+    CAPTURE(ior);
+    CHECK(schlickFresnel(1.0f, ior) == doctest::Approx(r0).epsilon(1e-5));
+    CHECK(schlickFresnel(0.0f, ior) == doctest::Approx(1.0).epsilon(1e-5));
+    CHECK(schlickFresnel(0.5f, ior) == doctest::Approx(r0 + (1 - r0) * std::pow(0.5, 5)).epsilon(1e-5));
+    float previous = 1.0f;
+    for (float c = 0.0f; c <= 1.0f; c += 0.05f) {  // monotone: less reflection towards normal incidence
+      const float r = schlickFresnel(c, ior);
+      CHECK(r <= previous + 1e-6f);
+      previous = r;
+    }
+  }
+}
+
+TEST_CASE("T6.4 mirror: a delta lobe — wi = reflect(wo), weight = reflectance, never evaluated" *
+          grading(2, "the sample's f is the full weight (reflectance) with pdf 1 and isDelta = true; f() and pdf() "
+                     "of a delta BSDF are 0, so direct lighting never evaluates it")) {
+  Random random(65);
+  for (int i = 0; i < 100; ++i) {
+    Vec3 wo = randomDirection(random, true);
+    BsdfSample s = sampleMirror(wo, Color(0.9f, 0.5f, 0.25f));
+    CHECK(s.isDelta);
+    CHECK(near(s.wi, Vec3(-wo.x, -wo.y, wo.z), 1e-6f));
+    CHECK(near(s.f, Color(0.9f, 0.5f, 0.25f), 1e-6f));
+    CHECK(s.pdf == doctest::Approx(1.0f));
+  }
+  Material mirror;
+  mirror.type = MaterialType::Mirror;
+  Hit hit;
+  const Bsdf bsdf(mirror, hit, Vec3(0, 0, 1));
+  CHECK(bsdf.isDelta());
+  CHECK(bsdf.f(Vec3(0, 0, 1), glm::normalize(Vec3(0.3f, 0, 1))) == Color(0.0f));
+  CHECK(bsdf.pdf(Vec3(0, 0, 1), glm::normalize(Vec3(0.3f, 0, 1))) == 0.0f);
+}
+
+TEST_CASE("T6.5 glass: reflection is chosen with the Fresnel probability (chi-square) and weighted right" *
+          grading(3, "reflect when u < F (weight = reflectance), else refract (weight = transmittance (n_o/n_t)^2); "
+                     "F from Schlick with the outside cosine; on total internal reflection always reflect")) {
+  constexpr int kSamples = 200000;
+  Random random(66);
+  for (int trial = 0; trial < 6; ++trial) {
+    const bool entering = trial % 2 == 0;
+    Vec3 wo = randomDirection(random, entering);
+    const float ior = 1.5f;
+    auto refracted = refract(wo, ior);
+    if (!entering && !refracted) continue;
+    const double cosOutside = entering ? wo.z : std::abs(refracted->z);
+    const double r0 = 0.04, m = 1.0 - cosOutside;
+    const double fresnel = r0 + (1 - r0) * m * m * m * m * m;
+    double reflections = 0.0;
+    for (int i = 0; i < kSamples; ++i) {
+      Sampler sampler(uint32_t(i), uint32_t(trial), testSeed(66));
+      BsdfSample s = sampleGlass(wo, Color(0.9f), Color(0.8f), ior, sampler.next1D());
+      REQUIRE(s.isDelta);
+      const bool reflected = s.wi.z * wo.z > 0.0f;
+      reflections += reflected;
+      if (i < 2000) {
+        const double nO = entering ? 1.0 : ior, nT = entering ? ior : 1.0;
+        const double expectedWeight = reflected ? 0.9 : 0.8 * (nO * nO) / (nT * nT);
+        CHECK(s.f.y == doctest::Approx(expectedWeight).epsilon(1e-4));
+      }
+    }
+    ChiSquareResult r = chiSquareTest({reflections, kSamples - reflections},
+                                      {kSamples * fresnel, kSamples * (1.0 - fresnel)});
+    INFO("entering " << entering << ", cos " << cosOutside << ": " << reflections / kSamples << " reflected, F = "
+                     << fresnel << ", p = " << r.pValue);
+    CHECK(r.failure.empty());
+    CHECK(r.pValue > 1e-4);
+  }
+  // Past the critical angle from inside: always reflect, with the reflectance.
+  const float critical = std::asin(1.0f / 1.5f) + 0.05f;
+  Vec3 tir(std::sin(critical), 0.0f, -std::cos(critical));
+  for (float u : {0.0f, 0.5f, 0.999f}) {
+    BsdfSample s = sampleGlass(tir, Color(0.9f), Color(0.8f), 1.5f, u);
+    CHECK(s.wi.z < 0.0f);
+    CHECK(s.f.y == doctest::Approx(0.9f));
+  }
+}
+
+TEST_CASE("T6.5 furnace: a perfect mirror and lossless glass vanish in a uniform environment" *
+          grading(3, "with reflectance = transmittance = 1 every path must carry exactly the environment: no energy "
+                     "lost or created at the boundary (flip the normal and eta when leaving; (n_o/n_t)^2 cancels "
+                     "between entering and leaving)")) {
+  Material mirror;
+  mirror.type = MaterialType::Mirror;
+  mirror.albedo = Color(1.0f);
+  MeanEstimate m = furnace(mirror, 1.0f, 20000);
+  INFO("mirror: " << m.describe(1.0));
+  CHECK(m.agrees(1.0));
+  for (float ior : {1.5f, 1.0f}) {
+    Material glass;
+    glass.type = MaterialType::Glass;
+    glass.albedo = Color(1.0f);
+    glass.transmittance = Color(1.0f);
+    glass.ior = ior;
+    MeanEstimate g = furnace(glass, 1.0f, 40000);
+    CAPTURE(ior);
+    INFO("glass: " << g.describe(1.0));
+    CHECK(g.agrees(1.0));
+  }
+}
+
+TEST_CASE("T6.5 glass of index 1 is invisible: the light behind it arrives unchanged" *
+          grading(2, "at ior = 1 Fresnel reflectance is 0 and refraction goes straight: every path must see "
+                     "exactly the emitter behind the sphere")) {
+  Scene scene;
+  Material glass;
+  glass.type = MaterialType::Glass;
+  glass.albedo = Color(1.0f);
+  glass.transmittance = Color(1.0f);
+  glass.ior = 1.0f;
+  scene.materials.push_back(glass);
+  scene.spheres.push_back(Sphere{Point3(0.0f), 1.0f, 0});
+  uint32_t emitter = addMaterial(scene, Color(0.0f), Color(3.0f));
+  addQuad(scene, {-5, -5, -3}, {10, 0, 0}, {0, 10, 0}, emitter);  // behind the sphere, facing +z
+  Rig rig(std::move(scene));
+  TraceContext context = rig.context(8, 1, false);
+  Random random(67);
+  int wrong = 0;
+  for (int i = 0; i < 2000; ++i) {
+    DVec3 target = random.inCube(0.7);
+    Point3 origin(0.0f, 0.0f, 4.0f);
+    Sampler sampler(uint32_t(i), 0, testSeed(67));
+    Color L = tracePath(context, Ray{origin, Vec3(glm::normalize(target - DVec3(origin)))}, sampler);
+    if (std::abs(L.y - 3.0f) > 1e-3f) ++wrong;
+  }
+  INFO(wrong << " of 2000 paths through index-1 glass did not see the emitter's 3.0");
+  CHECK(wrong == 0);
+}
