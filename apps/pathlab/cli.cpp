@@ -13,7 +13,6 @@
 #include "pathlab/progress.h"
 #include "pathlab/render.h"
 #include "pathlab/scene_io.h"
-#include "pathlab/tasks/placeholders.h"
 
 #ifndef PATHLAB_TASK_SUMMARY
 #define PATHLAB_TASK_SUMMARY "unknown"
@@ -111,8 +110,6 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel) {
   std::optional<Image> reference;
   if (!args.reference.empty()) reference = readImage(args.reference);
 
-  // Task 7 is not written yet: it says so once.
-  environmentPlaceholder();
 
   RenderResult result = render(scene, options);
   const RenderStats& stats = result.stats;

@@ -10,6 +10,7 @@ std::vector<DebugView> allDebugViews() {
   addDirectLightingViews(views);
   addPathTracingViews(views);
   addMirrorGlassViews(views);
+  addEnvironmentViews(views);
   return views;
 }
 

@@ -50,6 +50,7 @@ void writeImage(const Image& image, const std::string& path, const ImageMetadata
   OIIO::ImageSpec spec(image.width, image.height, 3, linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:ColorSpace", linear ? "Linear" : "sRGB");
   spec.attribute("Software", "PathLab");
+  if (linear) spec.attribute("compression", "zip");
   for (const auto& [key, value] : metadata) spec.attribute(key, value);
 
   if (!out->open(path, spec)) throw Error(path + ": cannot write: " + out->geterror());

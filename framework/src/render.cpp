@@ -82,7 +82,7 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
   const int width = settings.width, height = settings.height;
   const CameraBasis basis = cameraBasis(scene.camera);
   const Accelerator accelerator(scene);
-  const Lights lights = Lights::fromScene(scene);
+  const Lights lights = Lights::fromScene(scene, options.environmentSampling);
 
   std::vector<Color> sum(size_t(width) * size_t(height), Color(0.0f));
   std::vector<int> count(sum.size(), 0);

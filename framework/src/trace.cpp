@@ -16,9 +16,8 @@ bool TraceContext::occluded(const Ray& ray, Interval range) {
   return blocked;
 }
 
-Color TraceContext::background(const Vec3& /*direction*/) const {
-  // Environment maps become lights in task 7; until then the constant colour.
-  return scene.environment ? scene.environment->color * scene.environment->scale : Color(0.0f);
+Color TraceContext::background(const Vec3& direction) const {
+  return lights.environment ? lights.environment->radiance(direction) : Color(0.0f);
 }
 
 }  // namespace pathlab

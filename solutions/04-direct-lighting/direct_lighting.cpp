@@ -12,10 +12,11 @@ namespace {
 // light's own surface.
 constexpr float kShadowShortening = 1e-4f;
 
-// The shadow ray from the surface towards a point at `distance` along wi.
+// The shadow ray from the surface towards a point at `distance` along wi
+// (kInfinity: towards the environment).
 bool visible(TraceContext& context, const Hit& hit, const Vec3& wi, float distance) {
   const Point3 origin = offsetRayOrigin(hit.point, hit.geometricNormal, wi);
-  const float remaining = glm::length(hit.point + wi * distance - origin);
+  const float remaining = distance == kInfinity ? kInfinity : glm::length(hit.point + wi * distance - origin);
   return !context.occluded(Ray{origin, wi}, Interval{0.0f, remaining * (1.0f - kShadowShortening)});
 }
 
@@ -86,6 +87,25 @@ Color estimateDirectLighting(TraceContext& context, const Hit& hit, const Bsdf& 
       const Color f = bsdf.f(wo, direction->wi);
       if (maxComponent(f) <= 0.0f || !visible(context, hit, direction->wi, direction->distance)) continue;
       sum += f * sample.radiance * (cosSurface / direction->pdfSolidAngle);
+    }
+    radiance += sum / float(context.lightSamples);
+  }
+
+  // The environment: a light at infinity, sampled like an area light but
+  // directly in solid angle.
+  if (const std::optional<EnvironmentLight>& environment = context.lights.environment) {
+    Color sum(0.0f);
+    for (int i = 0; i < context.lightSamples; ++i) {
+      const std::optional<EnvironmentLightSample> sample = environment->sample(sampler.next2D());
+      if (!sample) continue;
+      const float cosSurface = glm::dot(sample->direction, bsdf.normal());
+      if (cosSurface <= 0.0f) continue;
+      const Color f = bsdf.f(wo, sample->direction);
+      if (maxComponent(f) <= 0.0f || maxComponent(sample->radiance) <= 0.0f ||
+          !visible(context, hit, sample->direction, kInfinity)) {
+        continue;
+      }
+      sum += f * sample->radiance * (cosSurface / sample->pdfSolidAngle);
     }
     radiance += sum / float(context.lightSamples);
   }

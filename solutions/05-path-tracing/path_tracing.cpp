@@ -26,7 +26,9 @@ Color tracePath(TraceContext& context, Ray ray, Sampler& sampler) {
   for (int bounce = 0;; ++bounce) {
     const std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
     if (!hit) {
-      radiance += throughput * context.background(ray.direction);
+      // The environment is a light too: after a diffuse bounce next-event
+      // estimation already counted it.
+      if (countEmission) radiance += throughput * context.background(ray.direction);
       break;
     }
     const Vec3 wo = -ray.direction;

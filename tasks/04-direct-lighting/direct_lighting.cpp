@@ -84,7 +84,11 @@ std::optional<LightDirection> lightDirection(const Point3& from, const AreaSampl
 //      light.sample(sampler.next2D()) -> lightDirection(...) -> add
 //      f * sample.radiance * cos(theta) / pdfSolidAngle; divide the sum by
 //      the number of samples.
-//   4. For every sample: skip it if cos(theta) = dot(wi, bsdf.normal()) <= 0
+//   4. The environment, if any (context.lights.environment): the same with
+//      context.lightSamples samples environment->sample(sampler.next2D()),
+//      which already gives wi, the radiance and pdfSolidAngle; its shadow
+//      ray has no end (range max = kInfinity).
+//   5. For every sample: skip it if cos(theta) = dot(wi, bsdf.normal()) <= 0
 //      or f is black; otherwise trace a shadow ray
 //        Ray{offsetRayOrigin(hit.point, hit.geometricNormal, wi), wi}
 //      with context.occluded(ray, Interval{0, d * (1 - 1e-4)}), d = distance

@@ -57,11 +57,13 @@ float diffuseDirectionPdf(const Vec3& wi) {
 //
 // Recipe, for bounce = 0, 1, 2, ...:
 //   1. hit = context.intersect(ray, Interval{0, kInfinity}); if nothing is hit,
-//      add throughput * context.background(ray.direction) and stop.
+//      the ray sees the environment: add throughput * context.background(ray.direction)
+//      under the same rule as emission (step 2), and stop.
 //   2. wo = -ray.direction. Emission: add throughput * emittedRadiance(scene, hit, wo)
 //      only for the camera ray (bounce 0) or after a delta bounce — after a
 //      diffuse bounce that light was already counted by step 4 (next-event
-//      estimation) at the previous vertex.
+//      estimation, which samples area lights and the environment) at the
+//      previous vertex.
 //   3. If bounce >= context.maxDepth, stop: -m counts bounces, so -m 0 shows
 //      only emitters and -m 1 is direct lighting.
 //   4. Bsdf bsdf(material, hit, wo); add throughput * estimateDirectLighting(...).

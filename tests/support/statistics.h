@@ -128,7 +128,9 @@ inline ChiSquareResult chiSquareTest(const std::vector<double>& observed, const 
 
 // Histogram of unit directions over the equal-area map (phi in [-pi, pi],
 // cos(theta) in [-1, 1]), and the counts a solid-angle pdf predicts for
-// `samples` draws (midpoint rule on a 4 x 4 sub-grid per cell).
+// `samples` draws: per cell, the midpoint rule on a sub-grid in
+// (phi, theta) of pdf * sin(theta) — smooth even for pdfs that grow like
+// 1 / sin(theta) at the poles, as equirectangular maps' do.
 struct DirectionHistogram {
   static constexpr int kPhi = 50, kCos = 101;  // odd: no cell edge on the horizon
   std::vector<double> counts = std::vector<double>(kPhi * kCos, 0.0);
@@ -145,22 +147,27 @@ struct DirectionHistogram {
     counts[size_t(j * kPhi + i)] += 1.0;
   }
 
-  static std::vector<double> expected(const std::function<double(const Vec3&)>& pdf, double samples) {
+  // kSub = 32 for piecewise-constant pdfs (environment maps), as Mitsuba does.
+  static std::vector<double> expected(const std::function<double(const Vec3&)>& pdf, double samples, int kSub = 8) {
     std::vector<double> result(kPhi * kCos, 0.0);
-    constexpr int kSub = 4;
     const double dPhi = 2.0 * M_PI / kPhi, dCos = 2.0 / kCos;
-    for (int j = 0; j < kCos; ++j)
+    for (int j = 0; j < kCos; ++j) {
+      // The cell's z range [z0, z1] is the theta range [acos(z1), acos(z0)].
+      const double theta0 = std::acos(std::min(1.0, -1.0 + (j + 1) * dCos));
+      const double theta1 = std::acos(std::max(-1.0, -1.0 + j * dCos));
+      const double dTheta = (theta1 - theta0) / kSub;
       for (int i = 0; i < kPhi; ++i) {
         double integral = 0.0;
         for (int sj = 0; sj < kSub; ++sj)
           for (int si = 0; si < kSub; ++si) {
             const double phi = -M_PI + (i + (si + 0.5) / kSub) * dPhi;
-            const double z = -1.0 + (j + (sj + 0.5) / kSub) * dCos;
-            const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
-            integral += pdf(Vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)));
+            const double theta = theta0 + (sj + 0.5) * dTheta;
+            const double r = std::sin(theta);
+            integral += pdf(Vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(std::cos(theta)))) * r;
           }
-        result[size_t(j * kPhi + i)] = samples * integral * dPhi * dCos / (kSub * kSub);
+        result[size_t(j * kPhi + i)] = samples * integral * (dPhi / kSub) * dTheta;
       }
+    }
     return result;
   }
 };

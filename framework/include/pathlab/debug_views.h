@@ -44,5 +44,6 @@ void addBvhViews(std::vector<DebugView>& views);           // tasks/03-bvh/debug
 void addDirectLightingViews(std::vector<DebugView>& views); // tasks/04-direct-lighting/debugger.cpp
 void addPathTracingViews(std::vector<DebugView>& views);    // tasks/05-path-tracing/debugger.cpp
 void addMirrorGlassViews(std::vector<DebugView>& views);    // tasks/06-mirror-glass/debugger.cpp
+void addEnvironmentViews(std::vector<DebugView>& views);    // tasks/07-environment/debugger.cpp
 
 }  // namespace pathlab

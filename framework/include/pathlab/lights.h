@@ -4,11 +4,13 @@
 // towards the side its geometric normal points to.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "pathlab/distribution.h"
 #include "pathlab/hit.h"
 #include "pathlab/scene.h"
+#include "pathlab/tasks/environment.h"
 
 namespace pathlab {
 
@@ -39,12 +41,42 @@ class AreaLight {
   Distribution1D triangles_;  // by area
 };
 
+enum class EnvironmentSampling { Importance, Uniform };
+
+// A direction towards the environment, with the radiance arriving from it.
+struct EnvironmentLightSample {
+  Vec3 direction{0.0f};    // unit, towards the sky
+  Color radiance{0.0f};
+  float pdfSolidAngle = 0.0f;
+};
+
+// The environment as a light at infinity: a constant colour (sampled
+// uniformly over the sphere) or an equirectangular map (task 7: lookup, and
+// importance sampling by luminance * sin(theta), or uniform sampling).
+class EnvironmentLight {
+ public:
+  EnvironmentLight(const Environment& environment, EnvironmentSampling sampling);
+
+  // Radiance arriving from the unit direction w.
+  Color radiance(const Vec3& w) const;
+  std::optional<EnvironmentLightSample> sample(Vec2 u) const;
+  float pdf(const Vec3& w) const;
+  bool hasMap() const { return environment_->image.width > 0; }
+  const EnvironmentDistribution& distribution() const { return distribution_; }
+
+ private:
+  const Environment* environment_;
+  EnvironmentSampling sampling_;
+  EnvironmentDistribution distribution_;  // built only for importance-sampled maps
+};
+
 struct Lights {
   std::vector<PointLight> points;
   std::vector<AreaLight> areas;
+  std::optional<EnvironmentLight> environment;  // only when the scene has one
 
-  static Lights fromScene(const Scene& scene);
-  bool empty() const { return points.empty() && areas.empty(); }
+  static Lights fromScene(const Scene& scene, EnvironmentSampling sampling = EnvironmentSampling::Importance);
+  bool empty() const { return points.empty() && areas.empty() && !environment; }
 };
 
 // Le leaving the surface at `hit` towards direction wo (unit, pointing away

@@ -36,6 +36,7 @@ using RadianceFunction = std::function<Color(TraceContext& context, const Ray& r
 struct RenderOptions {
   Integrator integrator = Integrator::Path;
   bool russianRoulette = true;
+  EnvironmentSampling environmentSampling = EnvironmentSampling::Importance;
   int threads = 0;    // 0: all hardware threads
   int tileSize = 16;
   bool progress = true;

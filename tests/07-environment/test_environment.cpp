@@ -1,0 +1,231 @@
+// Autograder suite for task 7 — environment lighting. Mitsuba's cases for
+// environment samplers: a single lit pixel, a constant 100x100 map and a
+// constant 3x2 map, tested with chi-square (alpha = 1e-4, its false-failure
+// rate) over the sphere; plus exact identities (pdf integral, seam, poles).
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "check.h"
+#include "grading.h"
+#include "pathlab/lights.h"
+#include "pathlab/random.h"
+#include "pathlab/tasks/environment.h"
+#include "statistics.h"
+
+using namespace pathlab;
+using namespace pathlab::test;
+
+namespace {
+
+Image constantMap(int width, int height, float value = 1.0f) { return Image(width, height, Color(value)); }
+
+// Chi-square of sampleEnvironment against environmentPdf over the sphere.
+ChiSquareResult chiSquare(const EnvironmentDistribution& d, int samples, uint64_t seed, int* failed) {
+  DirectionHistogram histogram;
+  *failed = 0;
+  for (int i = 0; i < samples; ++i) {
+    Sampler sampler(uint32_t(i), 0, testSeed(seed));
+    auto s = sampleEnvironment(d, sampler.next2D());
+    if (!s) {
+      ++*failed;
+      continue;
+    }
+    // The histogram is over (phi, cos) of its own axes: use z as the pole.
+    histogram.add(Vec3(s->direction.x, s->direction.z, s->direction.y));
+  }
+  auto pdf = [&](const Vec3& w) { return double(environmentPdf(d, Vec3(w.x, w.z, w.y))); };
+  return chiSquareTest(histogram.counts, DirectionHistogram::expected(pdf, samples - *failed, 32));
+}
+
+// Integral of environmentPdf over the sphere (midpoint rule, fine grid).
+double pdfIntegral(const EnvironmentDistribution& d) {
+  constexpr int kTheta = 400, kPhi = 800;
+  double sum = 0.0;
+  for (int j = 0; j < kTheta; ++j)
+    for (int i = 0; i < kPhi; ++i) {
+      const double theta = M_PI * (j + 0.5) / kTheta, phi = 2 * M_PI * (i + 0.5) / kPhi;
+      Vec3 w(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)), float(std::sin(theta) * std::sin(phi)));
+      sum += double(environmentPdf(d, w)) * std::sin(theta) * (M_PI / kTheta) * (2 * M_PI / kPhi);
+    }
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE("T7.1 equirect: directions and (u, v) are inverse, y is up, v = 0 at the zenith" *
+          grading(2, "theta = acos(y), phi = atan2(z, x) in [0, 2 pi), u = phi / 2pi, v = theta / pi; and back "
+                     "(sin theta cos phi, cos theta, sin theta sin phi)")) {
+  CHECK(directionToEquirect(Vec3(0, 1, 0)).y == doctest::Approx(0.0f));
+  CHECK(directionToEquirect(Vec3(0, -1, 0)).y == doctest::Approx(1.0f));
+  CHECK(directionToEquirect(Vec3(1, 0, 0)).x == doctest::Approx(0.0f));
+  CHECK(directionToEquirect(Vec3(0, 0, 1)).x == doctest::Approx(0.25f));
+  CHECK(directionToEquirect(Vec3(-1, 0, 0)).x == doctest::Approx(0.5f));
+  Random random(71);
+  for (int i = 0; i < 2000; ++i) {
+    Vec3 w(random.unitVector());
+    Point2 uv = directionToEquirect(w);
+    CHECK(uv.x >= 0.0f);
+    CHECK(uv.x < 1.0f);
+    CHECK(uv.y >= 0.0f);
+    CHECK(uv.y <= 1.0f);
+    CHECK(near(equirectToDirection(uv), w, 2e-4f));
+  }
+  CHECK(finite(equirectToDirection(directionToEquirect(Vec3(0, 1.0000001f, 0)))));  // |y| > 1 by rounding
+}
+
+TEST_CASE("T7.2 lookup: bilinear between pixel centres, continuous across the u seam, clamped at the poles" *
+          grading(3, "x = u W - 0.5 and y = v H - 0.5 put pixel centres at integers; wrap columns with modulo so "
+                     "x = -0.5 blends the last and the first column; clamp rows")) {
+  Image map(8, 4);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 8; ++i) map.at(i, j) = Color(float(i), float(j), float(i * 10 + j));
+  // At a pixel centre: exactly that pixel.
+  CHECK(near(lookupEnvironment(map, equirectToDirection({2.5f / 8, 1.5f / 4})), Color(2, 1, 21), 1e-4f));
+  // Halfway between two centres: the average.
+  CHECK(near(lookupEnvironment(map, equirectToDirection({3.0f / 8, 1.5f / 4})), Color(2.5f, 1, 26), 1e-3f));
+  // The seam: u = 0 is halfway between the last column (7) and the first (0).
+  Color seam = lookupEnvironment(map, equirectToDirection({0.0f, 2.5f / 4}));
+  INFO("at the seam " << str(seam));
+  CHECK(near(seam, Color(3.5f, 2, 37), 1e-3f));
+  // Just either side of the seam the values agree (continuity).
+  Color left = lookupEnvironment(map, equirectToDirection({0.999999f, 2.5f / 4}));
+  Color right = lookupEnvironment(map, equirectToDirection({0.000001f, 2.5f / 4}));
+  CHECK(near(left, right, 5e-3f));
+  // The poles: finite, the first and last rows.
+  Color top = lookupEnvironment(map, Vec3(0, 1, 0)), bottom = lookupEnvironment(map, Vec3(0, -1, 0));
+  CHECK(finite(top));
+  CHECK(finite(bottom));
+  CHECK(top.y == doctest::Approx(0.0f));
+  CHECK(bottom.y == doctest::Approx(3.0f));
+}
+
+TEST_CASE("T7.3 uniform sphere: directions cover the sphere evenly (chi-square, 10^6 samples)" *
+          grading(2, "z = 1 - 2 u.x is uniform in [-1, 1] (equal heights, equal areas); phi = 2 pi u.y")) {
+  constexpr int kSamples = 1000000;
+  DirectionHistogram histogram;
+  for (int i = 0; i < kSamples; ++i) {
+    Sampler sampler(uint32_t(i), 0, testSeed(72));
+    histogram.add(sampleUniformSphere(sampler.next2D()));
+  }
+  CHECK(histogram.outside == 0);
+  auto pdf = [](const Vec3&) { return 1.0 / (4.0 * M_PI); };
+  ChiSquareResult r = chiSquareTest(histogram.counts, DirectionHistogram::expected(pdf, kSamples));
+  INFO("chi-square " << r.statistic << ", dof " << r.degreesOfFreedom << ", p = " << r.pValue << " " << r.failure);
+  CHECK(r.failure.empty());
+  CHECK(r.pValue > 1e-4);
+}
+
+TEST_CASE("T7.4 distribution: CDFs from luminance x sin(theta); the pdf integrates to 1 over the sphere" *
+          grading(3, "weight each pixel by luminance times sin(theta) of its row; conditional CDFs per row, a "
+                     "marginal CDF over rows, both from 0 to 1; pdf = p(u, v) / (2 pi^2 sin(theta))")) {
+  Random random(73);
+  Image map(32, 16);
+  for (Color& c : map.pixels) c = Color(float(random.uniform(0, 2)), float(random.uniform(0, 1)), float(random.uniform(0, 3)));
+  EnvironmentDistribution d = buildEnvironmentDistribution(map);
+  REQUIRE(d.marginalCdf.size() == 17);
+  REQUIRE(d.conditionalCdf.size() == 16 * 33);
+  CHECK(d.marginalCdf.front() == 0.0f);
+  CHECK(d.marginalCdf.back() == doctest::Approx(1.0f));
+  // Row j's probability is proportional to (sum of its luminances) * sin(theta_j).
+  double total = 0.0;
+  std::vector<double> rows(16, 0.0);
+  for (int j = 0; j < 16; ++j) {
+    for (int i = 0; i < 32; ++i) rows[size_t(j)] += luminance(map.at(i, j));
+    rows[size_t(j)] *= std::sin(M_PI * (j + 0.5) / 16);
+    total += rows[size_t(j)];
+  }
+  for (int j = 0; j < 16; ++j) {
+    CAPTURE(j);
+    CHECK(d.marginalCdf[size_t(j) + 1] - d.marginalCdf[size_t(j)] == doctest::Approx(rows[size_t(j)] / total).epsilon(1e-4));
+  }
+  for (const Image& m : {map, constantMap(100, 100), constantMap(3, 2)}) {
+    const double integral = pdfIntegral(buildEnvironmentDistribution(m));
+    CAPTURE(m.width);
+    CHECK(integral == doctest::Approx(1.0).epsilon(2e-3));
+  }
+}
+
+TEST_CASE("T7.5 importance sampling: samples follow the pdf on Mitsuba's maps (constant 100x100, 3x2, random)" *
+          grading(4, "pick the row by the marginal CDF, the column by that row's CDF (binary search), a uniform "
+                     "point inside the pixel; divide p(u, v) by 2 pi^2 sin(theta) — without the sin(theta) the poles "
+                     "are over-sampled")) {
+  Random random(74);
+  Image noisy(24, 12);
+  for (Color& c : noisy.pixels) c = Color(float(random.uniform(0, 1)));
+  for (const Image& m : {constantMap(100, 100), constantMap(3, 2), noisy}) {
+    EnvironmentDistribution d = buildEnvironmentDistribution(m);
+    int failed = 0;
+    ChiSquareResult r = chiSquare(d, 500000, 74 + uint64_t(m.width), &failed);
+    CAPTURE(m.width);
+    CAPTURE(m.height);
+    INFO("chi-square " << r.statistic << ", dof " << r.degreesOfFreedom << ", p = " << r.pValue << " " << r.failure);
+    CHECK(failed < 10);
+    CHECK(r.failure.empty());
+    CHECK(r.pValue > 1e-4);
+  }
+}
+
+TEST_CASE("T7.5 importance sampling: a single hot pixel — every sample lands in it and L / pdf is nearly constant" *
+          grading(3, "all probability sits in one pixel: its pdf in solid angle varies only with sin(theta) inside "
+                     "the pixel, so L / pdf must stay within the pixel's sin(theta) range")) {
+  Image map(32, 16);
+  map.at(21, 5) = Color(100.0f);
+  const EnvironmentDistribution d = buildEnvironmentDistribution(map);
+  Environment environment;
+  environment.image = map;
+  const EnvironmentLight light(environment, EnvironmentSampling::Importance);
+  // The pixel's solid angle times its radiance is the exact total.
+  const double theta0 = M_PI * 5 / 16, theta1 = M_PI * 6 / 16;
+  const double pixelSolidAngle = (2 * M_PI / 32) * (std::cos(theta0) - std::cos(theta1));
+  double lo = 1e30, hi = 0.0;
+  int outside = 0;
+  for (int i = 0; i < 20000; ++i) {
+    Sampler sampler(uint32_t(i), 0, testSeed(75));
+    auto s = sampleEnvironment(d, sampler.next2D());
+    REQUIRE(s.has_value());
+    Point2 uv = directionToEquirect(s->direction);
+    if (int(uv.x * 32) != 21 || int(uv.y * 16) != 5) ++outside;
+    const double weight = 100.0 / double(s->pdfSolidAngle);
+    lo = std::min(lo, weight), hi = std::max(hi, weight);
+  }
+  // Within the pixel sin(theta) ranges over [sin(theta0), sin(theta1)]: the
+  // weight L / pdf = L * 2 pi^2 sin(theta) / p(u, v) spans the same ratio.
+  const double spread = std::sin(theta1) / std::sin(theta0);
+  INFO("L / pdf in [" << lo << ", " << hi << "], exact total " << 100.0 * pixelSolidAngle);
+  CHECK(outside == 0);
+  CHECK(hi / lo <= spread * 1.001);
+  CHECK(lo >= 100.0 * pixelSolidAngle / 1.2);
+  CHECK(hi <= 100.0 * pixelSolidAngle * 1.2);
+  (void)light;
+}
+
+TEST_CASE("T7.5 importance sampling: an all-black map gives no samples and no NaN; pole rows stay finite" *
+          grading(2, "a zero total weight means nothing to sample: return nothing, never divide by 0; a sample "
+                     "exactly at a pole (sin(theta) = 0) returns nothing too")) {
+  EnvironmentDistribution black = buildEnvironmentDistribution(Image(16, 8));
+  CHECK(black.totalWeight == 0.0);
+  for (int i = 0; i < 100; ++i) {
+    Sampler sampler(uint32_t(i), 0, testSeed(76));
+    CHECK_FALSE(sampleEnvironment(black, sampler.next2D()).has_value());
+  }
+  CHECK(environmentPdf(black, Vec3(0, 1, 0)) == 0.0f);
+  // Light only in the pole rows: samples and pdfs stay finite.
+  Image poles(16, 8);
+  for (int i = 0; i < 16; ++i) poles.at(i, 0) = poles.at(i, 7) = Color(5.0f);
+  EnvironmentDistribution d = buildEnvironmentDistribution(poles);
+  int finiteSamples = 0;
+  for (int i = 0; i < 20000; ++i) {
+    Sampler sampler(uint32_t(i), 0, testSeed(77));
+    auto s = sampleEnvironment(d, sampler.next2D());
+    if (!s) continue;
+    REQUIRE(finite(s->direction));
+    REQUIRE(std::isfinite(s->pdfSolidAngle));
+    REQUIRE(s->pdfSolidAngle > 0.0f);
+    ++finiteSamples;
+  }
+  CHECK(finiteSamples > 19990);
+  CHECK(std::isfinite(environmentPdf(d, Vec3(0, 1, 0))));
+  CHECK(std::isfinite(environmentPdf(d, Vec3(0, -1, 0))));
+  CHECK(pdfIntegral(d) == doctest::Approx(1.0).epsilon(5e-3));
+}
