@@ -1,11 +1,13 @@
 // pathlab-bench: benchmarks that print numbers (never timed unit tests).
 //   pathlab-bench bvh [MESH.obj] [--threads N] [--json]
 //   pathlab-bench render [--quick] [--threads N] [--json]
+//   pathlab-bench converge SCENE [--strategies a,b] [--budget SECONDS] [--out DIR]
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 
 #include "bvh_bench.h"
+#include "converge_bench.h"
 #include "render_bench.h"
 #include "pathlab/error.h"
 
@@ -22,6 +24,14 @@ int main(int argc, char** argv) {
   renderCommand->add_flag("--quick", render.quick, "64 spp instead of 1024 (under 45 s on 2 cores)");
   renderCommand->add_option("--threads", render.threads, "Threads (default: all cores)");
   renderCommand->add_flag("--json", render.json, "Print one JSON object as the last line");
+  pathlab::bench::ConvergeOptions converge;
+  CLI::App* convergeCommand = app.add_subcommand("converge", "Error against time for sampling strategies");
+  convergeCommand->add_option("scene", converge.scene, "Scene file")->required();
+  convergeCommand->add_option("--strategies", converge.strategies, "Comma-separated: env-importance, env-uniform");
+  convergeCommand->add_option("--budget", converge.budgetSeconds, "Render seconds per strategy (default 60)");
+  convergeCommand->add_option("--out", converge.outDir, "Output folder for the CSV and the cached reference");
+  convergeCommand->add_option("--reference-spp", converge.referenceSpp, "Samples per pixel of the reference");
+  convergeCommand->add_option("--threads", converge.threads, "Threads (default: all cores)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -33,6 +43,7 @@ int main(int argc, char** argv) {
   try {
     if (bvhCommand->parsed()) return pathlab::bench::runBvhBench(bvh);
     if (renderCommand->parsed()) return pathlab::bench::runRenderBench(render);
+    if (convergeCommand->parsed()) return pathlab::bench::runConvergeBench(converge);
   } catch (const pathlab::Error& e) {
     std::fprintf(stderr, "pathlab-bench: %s\n", e.what());
     return 1;

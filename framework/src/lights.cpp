@@ -1,5 +1,6 @@
 #include "pathlab/lights.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pathlab {
@@ -61,6 +62,14 @@ EnvironmentLight::EnvironmentLight(const Environment& environment, EnvironmentSa
   }
 }
 
+Color EnvironmentLight::pixelRadiance(const Vec3& w) const {
+  const Image& map = environment_->image;
+  const Point2 uv = directionToEquirect(w);
+  const int i = std::clamp(int(uv.x * float(map.width)), 0, map.width - 1);
+  const int j = std::clamp(int(uv.y * float(map.height)), 0, map.height - 1);
+  return map.at(i, j) * environment_->scale;
+}
+
 Color EnvironmentLight::radiance(const Vec3& w) const {
   const Color value = hasMap() ? lookupEnvironment(environment_->image, w) : environment_->color;
   return value * environment_->scale;
@@ -84,7 +93,7 @@ std::optional<EnvironmentLightSample> EnvironmentLight::sample(Vec2 u) const {
     s.pdfSolidAngle = 1.0f / (4.0f * kPi);
   }
   if (!(s.pdfSolidAngle > 0.0f) || !isFinite(s.direction)) return std::nullopt;
-  s.radiance = radiance(s.direction);
+  s.radiance = hasMap() ? pixelRadiance(s.direction) : radiance(s.direction);
   return s;
 }
 

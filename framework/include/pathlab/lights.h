@@ -53,12 +53,19 @@ struct EnvironmentLightSample {
 // The environment as a light at infinity: a constant colour (sampled
 // uniformly over the sphere) or an equirectangular map (task 7: lookup, and
 // importance sampling by luminance * sin(theta), or uniform sampling).
+//
+// Lighting (next-event estimation) uses the map's pixels as they are —
+// piecewise constant, exactly the function the importance sampler's pdf
+// follows, so a bright sun gives no fireflies. What a camera or a mirror sees
+// of the sky is the bilinear lookup: the same pixels, filtered for display.
 class EnvironmentLight {
  public:
   EnvironmentLight(const Environment& environment, EnvironmentSampling sampling);
 
-  // Radiance arriving from the unit direction w.
+  // Radiance seen along the unit direction w (bilinear for maps).
   Color radiance(const Vec3& w) const;
+  // The map's pixel value along w, what lighting integrates.
+  Color pixelRadiance(const Vec3& w) const;
   std::optional<EnvironmentLightSample> sample(Vec2 u) const;
   float pdf(const Vec3& w) const;
   bool hasMap() const { return environment_->image.width > 0; }

@@ -1,0 +1,19 @@
+// `pathlab-bench converge`: error against time for sampling strategies.
+#pragma once
+
+#include <string>
+
+namespace pathlab::bench {
+
+struct ConvergeOptions {
+  std::string scene;
+  std::string strategies = "env-importance,env-uniform";
+  double budgetSeconds = 60.0;  // per strategy
+  std::string outDir = "converge";
+  int referenceSpp = 2048;
+  int threads = 0;
+};
+
+int runConvergeBench(const ConvergeOptions& options);
+
+}  // namespace pathlab::bench
