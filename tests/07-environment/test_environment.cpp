@@ -146,14 +146,16 @@ TEST_CASE("T7.4 distribution: CDFs from luminance x sin(theta); the pdf integrat
   }
 }
 
-TEST_CASE("T7.5 importance sampling: samples follow the pdf on Mitsuba's maps (constant 100x100, 3x2, random)" *
+TEST_CASE("T7.5 importance sampling: samples follow the pdf on Mitsuba's maps (one lit pixel, constant 100x100 and 3x2, random)" *
           grading(4, "pick the row by the marginal CDF, the column by that row's CDF (binary search), a uniform "
                      "point inside the pixel; divide p(u, v) by 2 pi^2 sin(theta) — without the sin(theta) the poles "
                      "are over-sampled")) {
   Random random(74);
   Image noisy(24, 12);
   for (Color& c : noisy.pixels) c = Color(float(random.uniform(0, 1)));
-  for (const Image& m : {constantMap(100, 100), constantMap(3, 2), noisy}) {
+  Image single(20, 10);
+  single.at(13, 3) = Color(50.0f);
+  for (const Image& m : {single, constantMap(100, 100), constantMap(3, 2), noisy}) {
     EnvironmentDistribution d = buildEnvironmentDistribution(m);
     int failed = 0;
     ChiSquareResult r = chiSquare(d, 500000, 74 + uint64_t(m.width), &failed);
