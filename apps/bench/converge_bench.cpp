@@ -1,6 +1,7 @@
 #include "converge_bench.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -23,11 +24,22 @@ struct Strategy {
   RenderOptions options;
 };
 
+// Each strategy changes one thing from the reference's default.
 Strategy strategy(const std::string& name) {
   Strategy s{name, {}};
-  if (name == "env-importance") s.options.environmentSampling = EnvironmentSampling::Importance;
-  else if (name == "env-uniform") s.options.environmentSampling = EnvironmentSampling::Uniform;
-  else throw Error("--strategies: unknown strategy \"" + name + "\" (env-importance, env-uniform)");
+  if (name == "reference" || name == "env-importance" || name == "cosine" || name == "nee" || name == "rr") {
+  } else if (name == "env-uniform") {
+    s.options.environmentSampling = EnvironmentSampling::Uniform;
+  } else if (name == "uniform-hemisphere") {
+    s.options.cosineSampling = false;
+  } else if (name == "no-nee") {
+    s.options.lightSampling = false;
+  } else if (name == "no-rr") {
+    s.options.russianRoulette = false;
+  } else {
+    throw Error("--strategies: unknown strategy \"" + name +
+                "\" (reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, env-importance, env-uniform)");
+  }
   return s;
 }
 
@@ -90,7 +102,19 @@ int runConvergeBench(const ConvergeOptions& options) {
     }
     curves.push_back({name, points});
   }
+  csv.close();
   std::printf("wrote %s\n", csvPath.string().c_str());
+  // The plot: matplotlib (Debian's python3-matplotlib), no hand-made charts.
+  const fs::path pngPath = fs::path(options.outDir) / (stem + "-converge.png");
+  const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string command = python + " " PATHLAB_SOURCE_DIR "/tools/plot-convergence.py '" + csvPath.string() +
+                              "' '" + pngPath.string() + "' '" + stem + ": error against time' > /dev/null";
+  if (std::system(command.c_str()) != 0) {
+    std::fprintf(stderr, "no plot: install python3-matplotlib, then run tools/plot-convergence.py %s %s\n",
+                 csvPath.string().c_str(), pngPath.string().c_str());
+  } else {
+    std::printf("wrote %s\n", pngPath.string().c_str());
+  }
 
   // Efficiency = 1 / (relMSE x time): for unbiased estimators it settles to a
   // constant, and the ratio of two is the ratio of times to the same error.

@@ -63,6 +63,8 @@ TraceContext makeTraceContext(const Scene& scene, const Accelerator& accelerator
   context.lightSamples = scene.render.lightSamples;
   context.maxDepth = scene.render.maxDepth;
   context.russianRoulette = options.russianRoulette;
+  context.lightSampling = options.lightSampling;
+  context.cosineSampling = options.cosineSampling;
   return context;
 }
 

@@ -8,6 +8,20 @@
 #include "pathlab/tasks/direct_lighting.h"
 
 namespace pathlab {
+namespace {
+
+// The uniform-hemisphere strategy (pathlab-bench converge): p = 1 / (2 pi).
+std::optional<BsdfSample> sampleUniformHemisphere(const Bsdf& bsdf, const Vec3& wo, Vec2 u) {
+  const float z = u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;
+  if (!(z > 0.0f)) return std::nullopt;
+  BsdfSample s;
+  s.wi = glm::normalize(bsdf.frame().toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), z)));
+  s.f = bsdf.f(wo, s.wi);
+  s.pdf = 0.5f * kInvPi;
+  return s;
+}
+
+}  // namespace
 
 // Cosine-weighted: a uniform point on the unit disk (concentric-free polar
 // form r = sqrt(u1)), lifted onto the hemisphere (Malley's method).
@@ -28,19 +42,21 @@ Color tracePath(TraceContext& context, Ray ray, Sampler& sampler) {
     if (!hit) {
       // The environment is a light too: after a diffuse bounce next-event
       // estimation already counted it.
-      if (countEmission) radiance += throughput * context.background(ray.direction);
+      if (countEmission || !context.lightSampling) radiance += throughput * context.background(ray.direction);
       break;
     }
     const Vec3 wo = -ray.direction;
     // Emission found by a BSDF sample after a diffuse bounce was already
     // counted by next-event estimation at the previous vertex.
-    if (countEmission) radiance += throughput * emittedRadiance(scene, *hit, wo);
+    if (countEmission || !context.lightSampling) radiance += throughput * emittedRadiance(scene, *hit, wo);
     if (bounce >= context.maxDepth) break;  // -m: at most maxDepth bounces
 
     const Bsdf bsdf(scene.materials[hit->material], *hit, wo);
-    radiance += throughput * estimateDirectLighting(context, *hit, bsdf, wo, sampler);  // bounce + 1
+    if (context.lightSampling) radiance += throughput * estimateDirectLighting(context, *hit, bsdf, wo, sampler);
 
-    const std::optional<BsdfSample> sample = bsdf.sample(wo, sampler.next2D());
+    const std::optional<BsdfSample> sample = context.cosineSampling || bsdf.isDelta()
+                                                 ? bsdf.sample(wo, sampler.next2D())
+                                                 : sampleUniformHemisphere(bsdf, wo, sampler.next2D());
     if (!sample || !(sample->pdf > 0.0f)) break;
     const float cosine = std::abs(glm::dot(sample->wi, bsdf.normal()));
     throughput *= sample->f * (sample->isDelta ? 1.0f : cosine / sample->pdf);

@@ -36,6 +36,8 @@ using RadianceFunction = std::function<Color(TraceContext& context, const Ray& r
 struct RenderOptions {
   Integrator integrator = Integrator::Path;
   bool russianRoulette = true;
+  bool lightSampling = true;
+  bool cosineSampling = true;
   EnvironmentSampling environmentSampling = EnvironmentSampling::Importance;
   int threads = 0;    // 0: all hardware threads
   int tileSize = 16;

@@ -30,6 +30,10 @@ struct TraceContext {
   int lightSamples = 1;         // -l: samples per area light
   int maxDepth = 4;             // -m: the most bounces a path may make
   bool russianRoulette = true;  // end long paths at random (unbiased)
+  // Sampling strategies the reference path tracer honours, for comparing
+  // them (pathlab-bench converge; "going further" in the handouts):
+  bool lightSampling = true;    // next-event estimation; off: BSDF sampling only
+  bool cosineSampling = true;   // diffuse bounces cosine-weighted; off: uniform hemisphere
   IVec2 pixel{0, 0};            // the pixel being rendered
   uint64_t rays = 0;            // rays traced by this thread
   std::vector<TracedRay>* log = nullptr;  // when set, every ray is recorded
