@@ -29,32 +29,41 @@ using Json = nlohmann::json;
 constexpr int kImageSize = 512;  // primary rays: one per pixel of a 512 x 512 view
 constexpr int kRepeats = 3;      // timings are the median of three runs
 
-// A bumpy sphere of 2 x 200 x 256 = 102,400 triangles, for machines without
-// the course's bunny.
-TriangleMesh generatedMesh() {
-  constexpr int kRings = 200, kSegments = 256;
+// A bumpy sphere of 2 x rings x segments triangles (by default 102,400), for
+// machines without the course's bunny and for scaling measurements.
+TriangleMesh generatedMesh(int rings = 200, int segments = 256) {
   TriangleMesh mesh;
-  mesh.name = "generated bumpy sphere";
-  for (int i = 0; i <= kRings; ++i) {
-    const float theta = kPi * float(i) / kRings;
-    for (int j = 0; j < kSegments; ++j) {
-      const float phi = 2.0f * kPi * float(j) / kSegments;
+  mesh.name = "generated bumpy sphere (" + std::to_string(2 * rings * segments) + " triangles)";
+  for (int i = 0; i <= rings; ++i) {
+    const float theta = kPi * float(i) / rings;
+    for (int j = 0; j < segments; ++j) {
+      const float phi = 2.0f * kPi * float(j) / segments;
       const float r = 1.0f + 0.08f * std::sin(7.0f * theta) * std::cos(5.0f * phi) +
                       0.03f * std::sin(23.0f * theta + 3.0f * phi);
       mesh.positions.emplace_back(r * std::sin(theta) * std::cos(phi), r * std::cos(theta),
                                   r * std::sin(theta) * std::sin(phi));
     }
   }
-  auto index = [](int i, int j) { return uint32_t(i * kSegments + (j % kSegments)); };
-  for (int i = 0; i < kRings; ++i)
-    for (int j = 0; j < kSegments; ++j) {
+  auto index = [segments](int i, int j) { return uint32_t(i * segments + (j % segments)); };
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
       mesh.triangles.emplace_back(index(i, j), index(i + 1, j), index(i + 1, j + 1));
       mesh.triangles.emplace_back(index(i, j), index(i + 1, j + 1), index(i, j + 1));
     }
   return mesh;
 }
 
-Scene loadMesh(const std::string& requested, std::string& description) {
+Scene loadMesh(const std::string& requested, int triangles, std::string& description) {
+  if (triangles > 0) {
+    // rings x segments with segments = 2 rings: 4 rings^2 triangles.
+    const int rings = std::max(4, int(std::lround(std::sqrt(double(triangles) / 4.0))));
+    Scene scene;
+    scene.materials.push_back(Material{.name = "default"});
+    scene.meshes.push_back(generatedMesh(rings, 2 * rings));
+    scene.indexPrimitives();
+    description = scene.meshes[0].name;
+    return scene;
+  }
   std::string path = requested;
   if (path.empty()) {
     const char* shared = std::getenv("PATHLAB_SHARED_DIR");
@@ -172,7 +181,7 @@ struct SetResult {
 int runBvhBench(const BvhBenchOptions& options) {
   const int threads = options.threads > 0 ? options.threads : defaultThreadCount();
   std::string description;
-  Scene scene = loadMesh(options.mesh, description);
+  Scene scene = loadMesh(options.mesh, options.triangles, description);
   const size_t triangles = scene.triangleCount();
   if (scene.meshes.size() != 1 || !scene.spheres.empty()) throw Error("pathlab-bench bvh: expected one triangle mesh");
 

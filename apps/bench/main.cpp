@@ -1,5 +1,5 @@
 // pathlab-bench: benchmarks that print numbers (never timed unit tests).
-//   pathlab-bench bvh [MESH.obj] [--threads N] [--json]
+//   pathlab-bench bvh [MESH.obj | --triangles N] [--threads N] [--json]
 //   pathlab-bench render [--quick] [--threads N] [--json]
 //   pathlab-bench converge SCENE [--strategies a,b] [--budget SECONDS] [--out DIR]
 #include <CLI/CLI.hpp>
@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   bvhCommand->add_option("mesh", bvh.mesh, "OBJ mesh (default: the course's bunny, else a generated mesh)");
   bvhCommand->add_option("--threads", bvh.threads, "Threads for the multithreaded runs (default: all cores)");
   bvhCommand->add_flag("--json", bvh.json, "Print one JSON object as the last line");
+  bvhCommand->add_option("--triangles", bvh.triangles, "Use a generated mesh of about N triangles (scaling)");
   pathlab::bench::RenderBenchOptions render;
   CLI::App* renderCommand = app.add_subcommand("render", "The grading render of the Cornell box: paths/s and rays/s");
   renderCommand->add_flag("--quick", render.quick, "64 spp instead of 1024 (under 45 s on 2 cores)");
