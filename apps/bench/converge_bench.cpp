@@ -36,9 +36,14 @@ Strategy strategy(const std::string& name) {
     s.options.lightSampling = false;
   } else if (name == "no-rr") {
     s.options.russianRoulette = false;
+  } else if (name == "mis-balance") {
+    s.options.mis = MisHeuristic::Balance;
+  } else if (name == "mis-power") {
+    s.options.mis = MisHeuristic::Power;
   } else {
     throw Error("--strategies: unknown strategy \"" + name +
-                "\" (reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, env-importance, env-uniform)");
+                "\" (reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, mis-balance, mis-power, env-importance, "
+                "env-uniform)");
   }
   return s;
 }

@@ -106,13 +106,34 @@ Lights Lights::fromScene(const Scene& scene, EnvironmentSampling sampling) {
   Lights lights;
   if (scene.environment) lights.environment.emplace(*scene.environment, sampling);
   lights.points = scene.pointLights;
+  lights.lightOfMesh.assign(scene.meshes.size(), -1);
+  lights.lightOfSphere.assign(scene.spheres.size(), -1);
   for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
-    if (scene.materials[scene.meshes[m].material].isEmissive()) lights.areas.push_back(AreaLight::fromMesh(scene, m));
+    if (!scene.materials[scene.meshes[m].material].isEmissive()) continue;
+    lights.lightOfMesh[m] = int(lights.areas.size());
+    lights.areas.push_back(AreaLight::fromMesh(scene, m));
   }
   for (uint32_t s = 0; s < scene.spheres.size(); ++s) {
-    if (scene.materials[scene.spheres[s].material].isEmissive()) lights.areas.push_back(AreaLight::fromSphere(scene, s));
+    if (!scene.materials[scene.spheres[s].material].isEmissive()) continue;
+    lights.lightOfSphere[s] = int(lights.areas.size());
+    lights.areas.push_back(AreaLight::fromSphere(scene, s));
   }
   return lights;
+}
+
+const AreaLight* Lights::areaLightAt(const Scene& scene, const Hit& hit) const {
+  const PrimitiveRef& ref = scene.primitives[hit.primitive];
+  const int index = ref.isSphere() ? lightOfSphere[ref.index] : lightOfMesh[ref.mesh];
+  return index >= 0 ? &areas[size_t(index)] : nullptr;
+}
+
+float Lights::areaPdfSolidAngle(const AreaLight& light, const Point3& from, const Hit& hit) {
+  const Vec3 toLight = hit.point - from;
+  const float distanceSquared = glm::dot(toLight, toLight);
+  if (!(distanceSquared > 0.0f)) return 0.0f;
+  const float cosLight = -glm::dot(hit.geometricNormal, toLight) / std::sqrt(distanceSquared);
+  if (cosLight <= 0.0f) return 0.0f;
+  return distanceSquared / (cosLight * light.area());
 }
 
 Color emittedRadiance(const Scene& scene, const Hit& hit, const Vec3& wo) {

@@ -65,6 +65,7 @@ TraceContext makeTraceContext(const Scene& scene, const Accelerator& accelerator
   context.russianRoulette = options.russianRoulette;
   context.lightSampling = options.lightSampling;
   context.cosineSampling = options.cosineSampling;
+  context.mis = options.mis;
   return context;
 }
 

@@ -20,6 +20,14 @@ bool visible(TraceContext& context, const Hit& hit, const Vec3& wi, float distan
   return !context.occluded(Ray{origin, wi}, Interval{0.0f, remaining * (1.0f - kShadowShortening)});
 }
 
+// With multiple importance sampling (a reference strategy, off by default)
+// a light sample shares its direction with the path tracer's BSDF sample.
+// Multi-sample MIS: lightSamples light samples against one BSDF sample.
+float lightSampleWeight(const TraceContext& context, float pdfLight, float pdfBsdf) {
+  if (context.mis == MisHeuristic::None) return 1.0f;
+  return misWeight(context.mis, float(context.lightSamples) * pdfLight, pdfBsdf);
+}
+
 }  // namespace
 
 Color lambertianBrdf(const Color& albedo) { return albedo * kInvPi; }
@@ -86,7 +94,8 @@ Color estimateDirectLighting(TraceContext& context, const Hit& hit, const Bsdf& 
       if (cosSurface <= 0.0f) continue;
       const Color f = bsdf.f(wo, direction->wi);
       if (maxComponent(f) <= 0.0f || !visible(context, hit, direction->wi, direction->distance)) continue;
-      sum += f * sample.radiance * (cosSurface / direction->pdfSolidAngle);
+      sum += f * sample.radiance * (cosSurface / direction->pdfSolidAngle) *
+             lightSampleWeight(context, direction->pdfSolidAngle, bsdf.pdf(wo, direction->wi));
     }
     radiance += sum / float(context.lightSamples);
   }
@@ -105,7 +114,8 @@ Color estimateDirectLighting(TraceContext& context, const Hit& hit, const Bsdf& 
           !visible(context, hit, sample->direction, kInfinity)) {
         continue;
       }
-      sum += f * sample->radiance * (cosSurface / sample->pdfSolidAngle);
+      sum += f * sample->radiance * (cosSurface / sample->pdfSolidAngle) *
+             lightSampleWeight(context, sample->pdfSolidAngle, bsdf.pdf(wo, sample->direction));
     }
     radiance += sum / float(context.lightSamples);
   }

@@ -37,18 +37,36 @@ Color tracePath(TraceContext& context, Ray ray, Sampler& sampler) {
   const Scene& scene = context.scene;
   Color radiance(0.0f), throughput(1.0f);
   bool countEmission = true;  // light seen directly, or through a mirror (task 6)
+  // For multiple importance sampling (a reference strategy): where the last
+  // diffuse bounce was, and the pdf with which it chose this ray.
+  Point3 previousPoint(0.0f);
+  float previousBsdfPdf = 0.0f;
+  const bool mis = context.mis != MisHeuristic::None && context.lightSampling;
   for (int bounce = 0;; ++bounce) {
     const std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
     if (!hit) {
       // The environment is a light too: after a diffuse bounce next-event
       // estimation already counted it.
-      if (countEmission || !context.lightSampling) radiance += throughput * context.background(ray.direction);
+      if (countEmission || !context.lightSampling) {
+        radiance += throughput * context.background(ray.direction);
+      } else if (mis && context.lights.environment) {
+        const float pdfLight = float(context.lightSamples) * context.lights.environment->pdf(ray.direction);
+        radiance += throughput * context.lights.environment->pixelRadiance(ray.direction) *
+                    misWeight(context.mis, previousBsdfPdf, pdfLight);
+      }
       break;
     }
     const Vec3 wo = -ray.direction;
     // Emission found by a BSDF sample after a diffuse bounce was already
     // counted by next-event estimation at the previous vertex.
-    if (countEmission || !context.lightSampling) radiance += throughput * emittedRadiance(scene, *hit, wo);
+    if (countEmission || !context.lightSampling) {
+      radiance += throughput * emittedRadiance(scene, *hit, wo);
+    } else if (mis) {
+      if (const AreaLight* light = context.lights.areaLightAt(scene, *hit)) {
+        const float pdfLight = float(context.lightSamples) * Lights::areaPdfSolidAngle(*light, previousPoint, *hit);
+        radiance += throughput * emittedRadiance(scene, *hit, wo) * misWeight(context.mis, previousBsdfPdf, pdfLight);
+      }
+    }
     if (bounce >= context.maxDepth) break;  // -m: at most maxDepth bounces
 
     const Bsdf bsdf(scene.materials[hit->material], *hit, wo);
@@ -62,6 +80,8 @@ Color tracePath(TraceContext& context, Ray ray, Sampler& sampler) {
     throughput *= sample->f * (sample->isDelta ? 1.0f : cosine / sample->pdf);
     if (!(maxComponent(throughput) > 0.0f)) break;
     countEmission = sample->isDelta;
+    previousPoint = hit->point;
+    previousBsdfPdf = sample->pdf;
 
     // Russian roulette: continue with probability q and divide by q, so the
     // expected value is unchanged.

@@ -12,6 +12,10 @@
 #include "pathlab/random.h"
 #include "pathlab/render.h"
 #include "pathlab/scene_io.h"
+#include "pathlab/tasks/path_tracing.h"
+#include "meshes.h"
+#include "render_support.h"
+#include "statistics.h"
 
 using namespace pathlab;
 using namespace pathlab::test;
@@ -273,4 +277,53 @@ TEST_CASE("random: the sampler is uniform in [0, 1) and independent across dimen
   CHECK(std::abs(productSum / (n / 2) * 12.0) < 6.0 / std::sqrt(n / 2));
   Sampler a(1, 2, 3), b(1, 2, 3);
   CHECK(a.next1D() == b.next1D());
+}
+
+TEST_CASE("strategies: every reference sampling strategy is unbiased (closed enclosure and sky furnace)") {
+  // Inside a closed enclosure of albedo 1/2 and emission 1/2, L = 1 exactly;
+  // each strategy must agree within 5 standard errors (false failure 5.7e-7).
+  Scene enclosure;
+  enclosure.materials.push_back(Material{.name = "wall", .albedo = Color(0.5f), .emission = Color(0.5f)});
+  TriangleMesh mesh = test::icosphere(3, Point3(0.0f), 1.0f);
+  for (glm::uvec3& t : mesh.triangles) std::swap(t.y, t.z);  // facing inwards
+  enclosure.meshes.push_back(mesh);
+  // A grey sky over an albedo-0.8 sphere: every camera ray that hits it sees 0.8 * 0.5.
+  Scene sky;
+  sky.materials.push_back(Material{.name = "ball", .albedo = Color(0.8f)});
+  sky.spheres.push_back(Sphere{Point3(0.0f), 1.0f, 0});
+  sky.environment = Environment{};
+  sky.environment->image = Image(16, 8, Color(0.5f));
+  struct Case {
+    const char* name;
+    void (*apply)(TraceContext&);
+  };
+  const Case cases[] = {
+      {"reference", [](TraceContext&) {}},
+      {"mis-balance", [](TraceContext& c) { c.mis = MisHeuristic::Balance; }},
+      {"mis-power", [](TraceContext& c) { c.mis = MisHeuristic::Power; }},
+      {"mis-power, 4 light samples", [](TraceContext& c) { c.mis = MisHeuristic::Power, c.lightSamples = 4; }},
+      {"uniform-hemisphere", [](TraceContext& c) { c.cosineSampling = false; }},
+      {"no-nee", [](TraceContext& c) { c.lightSampling = false; }},
+      {"no-rr", [](TraceContext& c) { c.russianRoulette = false; }},
+  };
+  test::Rig insideRig(enclosure), skyRig(sky);
+  for (const Case& strategy : cases) {
+    for (int scene = 0; scene < 2; ++scene) {
+      TraceContext context = scene == 0 ? insideRig.context(60) : skyRig.context(8);
+      strategy.apply(context);
+      test::Random random(81 + uint32_t(scene));
+      test::MeanEstimate m;
+      for (int i = 0; i < 20000; ++i) {
+        Sampler sampler(uint32_t(i), 0, test::testSeed(81));
+        Ray ray = scene == 0 ? Ray{Point3(0.1f, 0.0f, -0.2f), Vec3(random.unitVector())}
+                             : Ray{Point3(0.0f, 0.0f, 4.0f), Vec3(glm::normalize(random.inCube(0.6) - test::DVec3(0, 0, 4)))};
+        m.add(tracePath(context, ray, sampler).y);
+      }
+      const double expected = scene == 0 ? 1.0 : 0.4;
+      CAPTURE(strategy.name);
+      CAPTURE(scene);
+      INFO(m.describe(expected));
+      CHECK(m.agrees(expected));
+    }
+  }
 }

@@ -43,6 +43,18 @@ class AreaLight {
 
 enum class EnvironmentSampling { Importance, Uniform };
 
+// Multiple importance sampling of light samples and BSDF samples (Veach):
+// a sample drawn with pdf p_a, where the other strategy would have drawn it
+// with pdf p_b, is weighted p_a / (p_a + p_b) (balance) or
+// p_a^2 / (p_a^2 + p_b^2) (power). None: light samples only, as in task 4-5.
+enum class MisHeuristic { None, Balance, Power };
+
+inline float misWeight(MisHeuristic heuristic, float pdfThis, float pdfOther) {
+  if (heuristic == MisHeuristic::Balance) return pdfThis / (pdfThis + pdfOther);
+  const float a = pdfThis * pdfThis, b = pdfOther * pdfOther;
+  return a / (a + b);
+}
+
 // A direction towards the environment, with the radiance arriving from it.
 struct EnvironmentLightSample {
   Vec3 direction{0.0f};    // unit, towards the sky
@@ -83,6 +95,14 @@ struct Lights {
   std::optional<EnvironmentLight> environment;  // only when the scene has one
 
   static Lights fromScene(const Scene& scene, EnvironmentSampling sampling = EnvironmentSampling::Importance);
+
+  // The area light whose surface `hit` lies on, or null.
+  const AreaLight* areaLightAt(const Scene& scene, const Hit& hit) const;
+  // Solid-angle pdf with which that light's area sampling picks the
+  // direction from `from` to `hit` (0 if the light faces away).
+  static float areaPdfSolidAngle(const AreaLight& light, const Point3& from, const Hit& hit);
+
+  std::vector<int> lightOfMesh, lightOfSphere;  // index into areas, or -1
   bool empty() const { return points.empty() && areas.empty() && !environment; }
 };
 

@@ -38,6 +38,7 @@ struct RenderOptions {
   bool russianRoulette = true;
   bool lightSampling = true;
   bool cosineSampling = true;
+  MisHeuristic mis = MisHeuristic::None;
   EnvironmentSampling environmentSampling = EnvironmentSampling::Importance;
   int threads = 0;    // 0: all hardware threads
   int tileSize = 16;

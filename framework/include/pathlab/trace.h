@@ -34,6 +34,7 @@ struct TraceContext {
   // them (pathlab-bench converge; "going further" in the handouts):
   bool lightSampling = true;    // next-event estimation; off: BSDF sampling only
   bool cosineSampling = true;   // diffuse bounces cosine-weighted; off: uniform hemisphere
+  MisHeuristic mis = MisHeuristic::None;  // combine light and BSDF samples (reference only)
   IVec2 pixel{0, 0};            // the pixel being rendered
   uint64_t rays = 0;            // rays traced by this thread
   std::vector<TracedRay>* log = nullptr;  // when set, every ray is recorded
