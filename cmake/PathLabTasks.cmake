@@ -14,13 +14,26 @@ set(PATHLAB_TASK_DIRS
   06-mirror-glass/mirror_glass.cpp
   07-environment/environment.cpp)
 
+# Where the student files come from: tasks/ by default; a TA grading a
+# submission points PATHLAB_STUDENT_DIR at it (files either as the
+# tasks/NN-name/ tree or flat by file name). A task file missing from the
+# submission falls back to the untouched stub in tasks/.
+set(PATHLAB_STUDENT_DIR ${CMAKE_SOURCE_DIR}/tasks CACHE PATH "Folder with the student's task files")
+
 function(pathlab_add_tasks)
   set(n 0)
   foreach(rel IN LISTS PATHLAB_TASK_DIRS)
     math(EXPR n "${n} + 1")
+    get_filename_component(file ${rel} NAME)
     foreach(variant student reference)
       if(variant STREQUAL student)
-        set(src ${CMAKE_SOURCE_DIR}/tasks/${rel})
+        if(EXISTS ${PATHLAB_STUDENT_DIR}/${rel})
+          set(src ${PATHLAB_STUDENT_DIR}/${rel})
+        elseif(EXISTS ${PATHLAB_STUDENT_DIR}/${file})
+          set(src ${PATHLAB_STUDENT_DIR}/${file})
+        else()
+          set(src ${CMAKE_SOURCE_DIR}/tasks/${rel})
+        endif()
       else()
         set(src ${CMAKE_SOURCE_DIR}/solutions/${rel})
       endif()

@@ -1,0 +1,81 @@
+"""The grader under fire: a submission whose task 2 segfaults, whose task 3
+never terminates, whose task 5 returns NaN and whose task 1 prints megabytes
+must get a results.json where every other test is scored normally.
+
+usage: test_grader.py REPO_ROOT BUILD_DIR"""
+import json
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+root, build = Path(sys.argv[1]), Path(sys.argv[2])
+submission = build / "broken-submission"
+shutil.rmtree(submission, ignore_errors=True)
+submission.mkdir(parents=True)
+for source in (root / "solutions").glob("*/*.cpp"):
+    shutil.copy(source, submission / source.name)
+
+
+def mutate(name, old, new):
+    path = submission / name
+    text = path.read_text()
+    assert old in text, (name, old)
+    path.write_text(text.replace(old, new, 1))
+
+
+# Task 1: correct, but floods stdout with 8 MB the first time it runs.
+mutate("camera_rays.cpp", "Point2 pixelSamplePosition(IVec2 pixel, Vec2 u) { return Point2(pixel) + u; }",
+       "Point2 pixelSamplePosition(IVec2 pixel, Vec2 u) {\n"
+       "  static bool once = [] { for (int i = 0; i < 100000; ++i) std::puts(std::string(80, 'x').c_str()); return true; }();\n"
+       "  (void)once;\n  return Point2(pixel) + u;\n}")
+mutate("camera_rays.cpp", "#include <cmath>", "#include <cmath>\n#include <cstdio>\n#include <string>")
+# Task 2: a segfault in the triangle test.
+mutate("intersection.cpp", "  // Translate the vertices so the ray starts at the origin.",
+       "  *static_cast<volatile int*>(nullptr) = 1;  // crash\n  // Translate the vertices so the ray starts at the origin.")
+# Task 3: an endless loop in the build.
+mutate("bvh.cpp", "Bvh buildBvh(std::span<const Aabb> primitiveBounds) {\n  Bvh bvh;",
+       "Bvh buildBvh(std::span<const Aabb> primitiveBounds) {\n  Bvh bvh;\n  for (volatile bool forever = true; forever;) {\n  }")
+# Task 5: NaN radiance.
+mutate("path_tracing.cpp", "  return radiance;\n}", "  return radiance * std::nanf(\"\");\n}")
+
+out = build / "broken-results.json"
+grade = subprocess.run([sys.executable, str(root / "tools" / "grade"), str(submission), "--out", str(out),
+                        "--build-dir", str(build / "grade-broken"), "--timeout", "3"],
+                       capture_output=True, text=True, timeout=1500)
+print(grade.stdout[-2000:], grade.stderr[-2000:])
+report = json.loads(out.read_text())
+failures = []
+by_task = {}
+for test in report["tests"]:
+    task = int(re.match(r"Task (\d+):", test["name"]).group(1))
+    by_task.setdefault(task, []).append(test)
+for task in (1, 4, 6, 7):  # unharmed: full marks despite the broken tasks around them
+    lost = [t["name"] for t in by_task[task] if t["score"] != t["max_score"]]
+    if lost:
+        failures.append(f"task {task} lost points it should not: {lost[:2]}")
+
+
+def expect(task, broken_prefixes, symptom):
+    # Tests that reach the broken step lose their points and say why; the
+    # task's other steps (in their own processes) keep theirs.
+    broken = [t for t in by_task[task] if any(t["name"].startswith(f"Task {task}: {p}") for p in broken_prefixes)]
+    broken_prefix = "/".join(broken_prefixes)
+    intact = [t for t in by_task[task] if t not in broken]
+    if not broken or any(t["score"] > 0 or (symptom and symptom not in t["output"]) for t in broken):
+        failures.append(f"task {task}: the {broken_prefix} tests should score 0 and report {symptom or 'the failure'}")
+    if not intact or any(t["score"] != t["max_score"] for t in intact):
+        failures.append(f"task {task}: tests away from the broken step should keep their points")
+
+
+expect(2, ["T2.1"], "SIGSEGV")                    # the triangle test crashes; spheres still pass
+expect(3, ["T3.2", "T3.3", "T3.4"], "timed out")  # the build never ends; the slab test still passes
+expect(5, ["T5.2"], "")                           # NaN radiance; the sampler still passes
+if out.stat().st_size > 1_000_000:
+    failures.append(f"results.json is {out.stat().st_size} bytes: output was not clipped")
+checks = 10
+for f in failures:
+    print("FAIL:", f)
+print(f"{checks - len(failures)} passed, {len(failures)} failed")
+sys.exit(1 if failures else 0)
