@@ -13,11 +13,15 @@ namespace {
 constexpr float kShadowShortening = 1e-4f;
 
 // The shadow ray from the surface towards a point at `distance` along wi
-// (kInfinity: towards the environment).
+// (kInfinity: towards the environment). It is aimed from the offset origin
+// at the light point itself, so it ends just short of the light whatever
+// the size of the offset.
 bool visible(TraceContext& context, const Hit& hit, const Vec3& wi, float distance) {
   const Point3 origin = offsetRayOrigin(hit.point, hit.geometricNormal, wi);
-  const float remaining = distance == kInfinity ? kInfinity : glm::length(hit.point + wi * distance - origin);
-  return !context.occluded(Ray{origin, wi}, Interval{0.0f, remaining * (1.0f - kShadowShortening)});
+  if (distance == kInfinity) return !context.occluded(Ray{origin, wi}, Interval{0.0f, kInfinity});
+  const Vec3 toLight = hit.point + wi * distance - origin;
+  const float remaining = glm::length(toLight);
+  return !context.occluded(Ray{origin, toLight / remaining}, Interval{0.0f, remaining * (1.0f - kShadowShortening)});
 }
 
 // With multiple importance sampling (a reference strategy, off by default)

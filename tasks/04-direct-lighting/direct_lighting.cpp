@@ -89,11 +89,11 @@ std::optional<LightDirection> lightDirection(const Point3& from, const AreaSampl
 //      which already gives wi, the radiance and pdfSolidAngle; its shadow
 //      ray has no end (range max = kInfinity).
 //   5. For every sample: skip it if cos(theta) = dot(wi, bsdf.normal()) <= 0
-//      or f is black; otherwise trace a shadow ray
-//        Ray{offsetRayOrigin(hit.point, hit.geometricNormal, wi), wi}
-//      with context.occluded(ray, Interval{0, d * (1 - 1e-4)}), d = distance
-//      from the ray origin to the light point, and add the sample only if
-//      nothing blocks it.
+//      or f is black; otherwise trace a shadow ray from
+//        origin = offsetRayOrigin(hit.point, hit.geometricNormal, wi)
+//      aimed at the light point: direction = normalize(lightPoint - origin),
+//      context.occluded(ray, Interval{0, d * (1 - 1e-4)}) with
+//      d = |lightPoint - origin|, and add the sample only if nothing blocks it.
 //
 // PITFALL: the shadow ray must stop just short of the light, or it hits the
 // light's own surface and everything is in shadow.

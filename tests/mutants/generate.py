@@ -1,0 +1,196 @@
+#!/usr/bin/env python3
+"""Writes tests/mutants/NN-name/*.cpp and tests/alternates/NN-name/*.cpp:
+each a full copy of the reference task file with one edit. A mutant is one
+realistic mistake and must lose points in its task's suite; an alternate is
+a correct but different solution and must score full points (CTest label
+"validity"; docs/grader-validity.md lists what caught each mutant).
+
+Run after changing a reference file: tests/mutants/generate.py"""
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+FILES = {
+    1: "01-camera-rays/camera_rays.cpp", 2: "02-intersection/intersection.cpp", 3: "03-bvh/bvh.cpp",
+    4: "04-direct-lighting/direct_lighting.cpp", 5: "05-path-tracing/path_tracing.cpp",
+    6: "06-mirror-glass/mirror_glass.cpp", 7: "07-environment/environment.cpp",
+}
+
+# (task, name, description, [(old, new), ...])
+MUTANTS = [
+    (1, "half-pixel-offset", "samples shifted by half a pixel",
+     [("return Point2(pixel) + u;", "return Point2(pixel) + u - Vec2(0.5f);")]),
+    (1, "no-jitter", "every sample at the pixel centre",
+     [("return Point2(pixel) + u;", "(void)u;\n  return Point2(pixel) + Vec2(0.5f);")]),
+    (1, "swapped-aspect", "aspect ratio height / width",
+     [("halfHeight * float(resolution.x) / float(resolution.y)", "halfHeight * float(resolution.y) / float(resolution.x)")]),
+    (1, "y-not-flipped", "raster y not flipped: the image upside down",
+     [("1.0f - 2.0f * raster.y / float(resolution.y)", "2.0f * raster.y / float(resolution.y) - 1.0f")]),
+    (1, "full-fov-tangent", "tan(vfov) instead of tan(vfov / 2)",
+     [("std::tan(glm::radians(camera.vfovDegrees) * 0.5f)", "std::tan(glm::radians(camera.vfovDegrees))")]),
+    (1, "degrees-as-radians", "the field of view in degrees passed to tan",
+     [("std::tan(glm::radians(camera.vfovDegrees) * 0.5f)", "std::tan(camera.vfovDegrees * 0.5f)")]),
+    (1, "no-up-fallback", "no fallback when up is parallel to the view: NaN",
+     [("if (glm::length(right) < 1e-4f) {", "if (false) {")]),
+    (2, "absolute-det-epsilon", "|det| < 1e-6 rejected (an absolute epsilon)",
+     [("if (det == 0.0f) return std::nullopt;", "if (std::abs(det) < 1e-6f) return std::nullopt;")]),
+    (2, "non-watertight-edges", "edges with an edge function of exactly 0 rejected on both sides",
+     [("if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) return std::nullopt;",
+       "if ((e0 <= 0 || e1 <= 0 || e2 <= 0) && (e0 >= 0 || e1 >= 0 || e2 >= 0)) return std::nullopt;")]),
+    (2, "back-face-culling", "triangles seen from behind are not hit",
+     [("if (det == 0.0f) return std::nullopt;", "if (det <= 0.0f) return std::nullopt;")]),
+    (2, "swapped-barycentrics", "b1 and b2 swapped",
+     [("return TriangleHit{tScaled * invDet, e1 * invDet, e2 * invDet};", "return TriangleHit{tScaled * invDet, e2 * invDet, e1 * invDet};")]),
+    (2, "ignores-range-max", "hits beyond range.max accepted",
+     [("if (det > 0.0f && (tScaled <= range.min * det || tScaled >= range.max * det)) return std::nullopt;",
+       "if (det > 0.0f && tScaled <= range.min * det) return std::nullopt;"),
+      ("if (det < 0.0f && (tScaled >= range.min * det || tScaled <= range.max * det)) return std::nullopt;",
+       "if (det < 0.0f && tScaled >= range.min * det) return std::nullopt;")]),
+    (2, "naive-discriminant", "b'^2 - a c' discriminant (cancellation for small far spheres)",
+     [("const float discriminant = a * (radius * radius - glm::dot(perpendicular, perpendicular));",
+       "(void)perpendicular;\n  const float discriminant = halfB * halfB - a * c;")]),
+    (2, "negative-root", "the near root returned even when it is behind the origin",
+     [("if (range.contains(t0)) return t0;", "if (t0 < range.max) return t0;")]),
+    (2, "unnormalised-sphere-normal", "the sphere normal not normalised",
+     [("const Vec3 outward = glm::normalize(ray.at(t) - center);", "const Vec3 outward = ray.at(t) - center;")]),
+    (2, "flips-shading-normal", "the shading normal flipped instead of the geometric one",
+     [("if (glm::dot(s.geometricNormal, s.shadingNormal) < 0.0f) s.geometricNormal = -s.geometricNormal;",
+       "if (glm::dot(s.geometricNormal, s.shadingNormal) < 0.0f) s.shadingNormal = -s.shadingNormal;")]),
+    (3, "first-hit-not-closest", "the traversal returns the first hit found",
+     [("          closest = hit;\n          range.max = hit->t;  // from now on only closer hits count", "          return hit;")]),
+    (3, "nan-unsafe-slab", "min/max that let a NaN through (rays on slab planes with -0)",
+     [("const float near = (t0 < t1 || t0 != t0) ? t0 : t1;", "const float near = t0 < t1 ? t0 : t1;"),
+      ("const float far = ((t0 > t1 || t0 != t0) ? t0 : t1) * kWidenExit;", "const float far = (t0 > t1 ? t0 : t1) * kWidenExit;")]),
+    (3, "one-big-leaf", "no split: the root is one leaf",
+     [("    if (count == 1) return false;", "    return false;")]),
+    (3, "median-split", "object median split instead of SAH",
+     [("const Split split = depth < kMedianSplitDepth ? bestSplit(node, centroidBounds, first, count) : Split{};",
+       "const Split split{};\n    (void)&Builder::bestSplit;")]),
+    (3, "any-hit-ignores-range", "shadow rays count hits beyond the light",
+     [("        if (geometry.intersect(slot, ray, range)) return true;", "        if (geometry.intersect(slot, ray, Interval{range.min, kInfinity})) return true;")]),
+    (3, "no-stats", "traversal statistics not counted",
+     [("        if (stats) ++stats->primitiveTests;\n        if (geometry.intersect(slot, ray, range)) return true;",
+       "        if (geometry.intersect(slot, ray, range)) return true;")]),
+    (4, "missing-inv-pi", "the Lambertian BRDF without 1/pi",
+     [("Color lambertianBrdf(const Color& albedo) { return albedo * kInvPi; }", "Color lambertianBrdf(const Color& albedo) { return albedo; }")]),
+    (4, "missing-light-cosine", "pdfSolidAngle without the light's cosine",
+     [("sample.pdfArea * distanceSquared / cosLight", "sample.pdfArea * distanceSquared")]),
+    (4, "missing-surface-cosine", "no cos(theta) at the surface",
+     [("sum += f * sample.radiance * (cosSurface / direction->pdfSolidAngle) *", "sum += f * sample.radiance * (1.0f / direction->pdfSolidAngle) *")]),
+    (4, "no-pdf-division", "area samples not divided by their pdf",
+     [("sum += f * sample.radiance * (cosSurface / direction->pdfSolidAngle) *", "sum += f * sample.radiance * (cosSurface) *")]),
+    (4, "shadow-ray-reaches-light", "shadow rays run the full distance to the light",
+     [("Interval{0.0f, remaining * (1.0f - kShadowShortening)}", "Interval{0.0f, remaining * 1.0001f}")]),
+    (4, "fixed-epsilon-offset", "ray origins moved by a fixed 1e-4",
+     [("    result[a] = std::abs(p[a]) < kOrigin ? p[a] + kFloatScale * n[a] : moved;", "    (void)moved, (void)kOrigin, (void)kFloatScale;\n    result[a] = p[a] + 1e-4f * n[a];")]),
+    (4, "no-offset", "shadow rays start exactly on the surface",
+     [("  const Point3 origin = offsetRayOrigin(hit.point, hit.geometricNormal, wi);", "  const Point3 origin = hit.point;")]),
+    (4, "no-shadows", "occlusion never tested",
+     [("  return !context.occluded(Ray{origin, toLight / remaining}, Interval{0.0f, remaining * (1.0f - kShadowShortening)});",
+       "  (void)remaining;\n  return true;")]),
+    (4, "two-sided-lights", "lights seen from behind still emit",
+     [("const float cosLight = -glm::dot(sample.normal, wi);", "const float cosLight = std::abs(glm::dot(sample.normal, wi));")]),
+    (4, "light-samples-not-averaged", "-l samples summed, not averaged",
+     [("    radiance += sum / float(context.lightSamples);\n  }\n\n  // The environment", "    radiance += sum;\n  }\n\n  // The environment")]),
+    (5, "emission-counted-twice", "emission added after diffuse bounces too",
+     [("    countEmission = sample->isDelta;", "    countEmission = true;")]),
+    (5, "roulette-not-rescaled", "Russian roulette without dividing by q",
+     [("      throughput /= q;", "      (void)q;")]),
+    (5, "roulette-rescaled-twice", "Russian roulette divides by q twice",
+     [("      throughput /= q;", "      throughput /= q * q;")]),
+    (5, "no-pdf-division", "throughput not divided by the pdf",
+     [("throughput *= sample->f * (sample->isDelta ? 1.0f : cosine / sample->pdf);", "throughput *= sample->f * (sample->isDelta ? 1.0f : cosine);")]),
+    (5, "missing-cosine", "throughput without the cosine",
+     [("throughput *= sample->f * (sample->isDelta ? 1.0f : cosine / sample->pdf);", "(void)cosine;\n    throughput *= sample->f * (sample->isDelta ? 1.0f : 1.0f / sample->pdf);")]),
+    (5, "pdf-mismatch", "a uniform pdf for a cosine-weighted sampler",
+     [("float diffuseDirectionPdf(const Vec3& wi) { return wi.z > 0.0f ? wi.z * kInvPi : 0.0f; }",
+       "float diffuseDirectionPdf(const Vec3& wi) { return wi.z > 0.0f ? 0.5f * kInvPi : 0.0f; }")]),
+    (5, "depth-off-by-one", "one bounce more than -m allows",
+     [("    if (bounce >= context.maxDepth) break;", "    if (bounce > context.maxDepth) break;")]),
+    (5, "direct-light-only-at-first-hit", "next-event estimation only at the camera hit",
+     [("    if (context.lightSampling) radiance += throughput * estimateDirectLighting(context, *hit, bsdf, wo, sampler);",
+       "    if (context.lightSampling && bounce == 0) radiance += throughput * estimateDirectLighting(context, *hit, bsdf, wo, sampler);")]),
+    (5, "environment-counted-twice", "escaped rays add the environment after diffuse bounces too",
+     [("      if (countEmission || !context.lightSampling) {\n        radiance += throughput * context.background(ray.direction);",
+       "      if (true) {\n        radiance += throughput * context.background(ray.direction);")]),
+    (6, "no-eta-flip", "the index ratio not flipped when leaving the glass",
+     [("const float eta = entering ? 1.0f / ior : ior;", "const float eta = 1.0f / ior;\n  (void)entering;")]),
+    (6, "tir-ignored", "no total internal reflection check",
+     [("  if (sin2T >= 1.0f) return std::nullopt;  // total internal reflection\n", "")]),
+    (6, "r0-not-squared", "Schlick's R0 not squared",
+     [("  const float f0 = r0 * r0;", "  const float f0 = std::abs(r0);")]),
+    (6, "fresnel-weight", "the reflected choice weighted by F instead of F / F",
+     [("    s.f = reflectance;  // reflectance * F / P(reflect) with P(reflect) = F", "    s.f = reflectance * fresnel;")]),
+    (6, "mirror-not-delta", "the mirror sample not marked delta",
+     [("  s.pdf = 1.0f;\n  s.isDelta = true;\n  return s;\n}\n\nBsdfSample sampleGlass", "  s.pdf = 1.0f;\n  s.isDelta = false;\n  return s;\n}\n\nBsdfSample sampleGlass")]),
+    (6, "inverted-radiance-scaling", "(n_t / n_o)^2 instead of (n_o / n_t)^2 across the boundary",
+     [("s.f = transmittance * ((nFrom * nFrom) / (nTo * nTo));", "s.f = transmittance * ((nTo * nTo) / (nFrom * nFrom));")]),
+    (7, "pdf-without-sin-theta", "the solid-angle pdf without the sin(theta) Jacobian",
+     [("  return EnvironmentSample{equirectToDirection(uv), pdfUv / (2.0f * kPi * kPi * sinTheta)};",
+       "  return EnvironmentSample{equirectToDirection(uv), pdfUv / (2.0f * kPi * kPi)};"),
+      ("  return pdfUv / (2.0f * kPi * kPi * sinTheta);\n}", "  return pdfUv / (2.0f * kPi * kPi);\n}")]),
+    (7, "weights-without-sin-theta", "pixel weights without sin(theta)",
+     [("    const double sinTheta = std::sin(M_PI * (j + 0.5) / map.height);", "    const double sinTheta = 1.0;")]),
+    (7, "no-seam-wrap", "columns clamped instead of wrapped at the u seam",
+     [("  const int x0 = (int(x0f) % map.width + map.width) % map.width;  // wraps at the u seam\n  const int x1 = (x0 + 1) % map.width;",
+       "  const int x0 = std::clamp(int(x0f), 0, map.width - 1);\n  const int x1 = std::min(x0 + 1, map.width - 1);")]),
+    (7, "cdf-off-by-one", "the row one past the one the CDF chose",
+     [("  const int j = findInterval(d.marginalCdf.data(), d.height, u.y);", "  const int j = std::min(findInterval(d.marginalCdf.data(), d.height, u.y) + 1, d.height - 1);")]),
+    (7, "lookup-half-pixel", "bilinear lookup without the half-pixel offset",
+     [("const float x = uv.x * float(map.width) - 0.5f, y = uv.y * float(map.height) - 0.5f;", "const float x = uv.x * float(map.width), y = uv.y * float(map.height);")]),
+    (7, "hemisphere-not-sphere", "uniform 'sphere' samples only one hemisphere",
+     [("  const float z = 1.0f - 2.0f * u.x;\n  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), z};",
+       "  const float z = u.x;\n  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), z};")]),
+]
+
+ALTERNATES = [
+    (1, "mirrored-jitter", "pixel + (1 - u): another uniform map onto the pixel",
+     [("return Point2(pixel) + u;", "return Point2(pixel) + (Vec2(1.0f) - u);")]),
+    (1, "duff-fallback-frame", "the up fallback from Duff et al.'s orthonormal basis",
+     [("    Vec3 a = glm::abs(basis.forward);\n    Vec3 axis = (a.x <= a.y && a.x <= a.z) ? Vec3(1, 0, 0) : (a.y <= a.z ? Vec3(0, 1, 0) : Vec3(0, 0, 1));\n    right = glm::cross(basis.forward, axis);",
+       "    const Vec3& n = basis.forward;\n    const float sign = std::copysign(1.0f, n.z), a = -1.0f / (sign + n.z), b = n.x * n.y * a;\n    right = Vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);")]),
+    (2, "double-precision-edges", "the edge functions always in double",
+     [("  if (e0 == 0.0f || e1 == 0.0f || e2 == 0.0f) {", "  if (true) {")]),
+    (2, "quadratic-in-double", "the ray-sphere quadratic solved in double precision",
+     [("  const Vec3 f = ray.origin - center;\n  const Vec3& d = ray.direction;\n  const float a = glm::dot(d, d);\n  const float halfB = glm::dot(f, d);\n  const float c = glm::dot(f, f) - radius * radius;",
+       "  const glm::dvec3 fd = glm::dvec3(ray.origin) - glm::dvec3(center), dd(ray.direction);\n  const double ad = glm::dot(dd, dd), hb = glm::dot(fd, dd), cd = glm::dot(fd, fd) - double(radius) * radius;\n  const Vec3 f(fd);\n  const Vec3& d = ray.direction;\n  const float a = float(ad), halfB = float(hb), c = float(cd);")]),
+    (3, "eight-bins", "SAH with 8 bins", [("constexpr int kBins = 16;", "constexpr int kBins = 8;")]),
+    (3, "thirty-two-bins", "SAH with 32 bins", [("constexpr int kBins = 16;", "constexpr int kBins = 32;")]),
+    (3, "unordered-traversal", "closest hit without visiting the nearer child first",
+     [("        if (*tFar < *tNear) std::swap(near, far), std::swap(tNear, tFar);", "")]
+     if False else [("      if (tFar < tNear) std::swap(near, far), std::swap(tNear, tFar);\n", "      if (tNear == kInfinity) std::swap(near, far), std::swap(tNear, tFar);\n")]),
+    (4, "relative-epsilon-offset", "ray origins moved by 1e-4 of the coordinates' size",
+     [("    result[a] = std::abs(p[a]) < kOrigin ? p[a] + kFloatScale * n[a] : moved;",
+       "    (void)moved, (void)kFloatScale, (void)kOrigin;\n    result[a] = p[a] + 1e-4f * std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1e-3f}) * n[a];")]),
+    (4, "swapped-light-randoms", "the light sample's two random numbers in the other order",
+     [("      const AreaSample sample = light.sample(sampler.next2D());", "      const Vec2 u = sampler.next2D();\n      const AreaSample sample = light.sample(Vec2(u.y, u.x));")]),
+    (5, "uniform-hemisphere", "uniform hemisphere sampling, p = 1 / (2 pi)",
+     [("  const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};",
+       "  const float z = u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), z};"),
+      ("float diffuseDirectionPdf(const Vec3& wi) { return wi.z > 0.0f ? wi.z * kInvPi : 0.0f; }",
+       "float diffuseDirectionPdf(const Vec3& wi) { return wi.z > 0.0f ? 0.5f * kInvPi : 0.0f; }")]),
+    (5, "fixed-roulette", "Russian roulette with a fixed q = 0.8 from the second bounce",
+     [("      const float q = std::min(0.95f, maxComponent(throughput));", "      const float q = 0.8f;"),
+      ("  constexpr int kRouletteFromBounce = 3;", "  constexpr int kRouletteFromBounce = 2;")]),
+    (7, "linear-search", "CDF inversion by linear search",
+     [("  const float* it = std::upper_bound(cdf, cdf + n + 1, x);\n  int i = std::clamp(int(it - cdf) - 1, 0, n - 1);",
+       "  int i = 0;\n  while (i + 1 < n && cdf[i + 1] <= x) ++i;")]),
+]
+
+
+def write(kind, entries):
+    for task, name, description, edits in entries:
+        rel = FILES[task]
+        text = (ROOT / "solutions" / rel).read_text()
+        for old, new in edits:
+            if old not in text:
+                raise SystemExit(f"{kind} {name}: cannot find the line to change: {old[:60]!r}")
+            text = text.replace(old, new, 1)
+        header = f"// {kind[:-1]} {name}: {description}.\n// Generated by tests/mutants/generate.py from solutions/{rel}; do not edit.\n"
+        out = ROOT / "tests" / kind / rel.split("/")[0] / f"{name}.cpp"
+        out.parent.mkdir(parents=True, exist_ok=True)
+        out.write_text(header + text)
+
+
+write("mutants", MUTANTS)
+write("alternates", ALTERNATES)
+print(f"{len(MUTANTS)} mutants, {len(ALTERNATES)} alternates")
