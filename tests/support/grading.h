@@ -4,6 +4,7 @@
 // mistake:
 //
 //   TEST_CASE("T2.1 triangle: ..." * pathlab::test::grading(3, "hint ..."))
+//   TEST_CASE("..." * grading(2, "hint ...", Visibility::AfterDueDate))   // hidden until the due date
 //
 // The listener in listener.cpp prints the hint under a failing test and a
 // score line at the end ("SCORE 17/20 points").
@@ -15,12 +16,15 @@
 
 namespace pathlab::test {
 
+// Who sees a test's result on Gradescope (its "visibility").
+enum class Visibility { Visible, Hidden, AfterDueDate, AfterPublished };
+
 // doctest keeps the description string by pointer, so grading() stores the
 // text for the life of the program.
-const char* gradingText(int points, const char* hint);
+const char* gradingText(int points, const char* hint, Visibility visibility);
 
-inline doctest::description grading(int points, const char* hint) {
-  return doctest::description(gradingText(points, hint));
+inline doctest::description grading(int points, const char* hint, Visibility visibility = Visibility::Visible) {
+  return doctest::description(gradingText(points, hint, visibility));
 }
 
 }  // namespace pathlab::test

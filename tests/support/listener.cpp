@@ -10,11 +10,12 @@
 
 namespace pathlab::test {
 
-const char* gradingText(int points, const char* hint) {
+const char* gradingText(int points, const char* hint, Visibility visibility) {
   static std::deque<std::string> texts;  // stable addresses
   static std::mutex mutex;
+  static const char* names[] = {"visible", "hidden", "after_due_date", "after_published"};
   std::lock_guard<std::mutex> lock(mutex);
-  texts.push_back("points=" + std::to_string(points) + "; hint=" + hint);
+  texts.push_back("points=" + std::to_string(points) + "; visibility=" + names[int(visibility)] + "; hint=" + hint);
   return texts.back().c_str();
 }
 
@@ -23,6 +24,12 @@ namespace {
 int pointsOf(const char* description) {
   if (!description || std::string(description).rfind("points=", 0) != 0) return 1;
   return std::atoi(description + 7);
+}
+
+std::string visibilityOf(const char* description) {
+  std::string text = description ? description : "";
+  size_t at = text.find("visibility=");
+  return at == std::string::npos ? "visible" : text.substr(at + 11, text.find(';', at) - at - 11);
 }
 
 std::string hintOf(const char* description) {
@@ -35,11 +42,12 @@ std::string hintOf(const char* description) {
 struct GradingListener : doctest::IReporter {
   explicit GradingListener(const doctest::ContextOptions&) {}
 
-  // With --list-test-cases: one "TEST <points> <name>" line per case, the
+  // With --list-test-cases: one "TEST <points> <visibility> <name>" line per case, the
   // manifest tools/grade uses to run each case in its own process.
   void report_query(const doctest::QueryData& query) override {
     for (unsigned i = 0; i < query.num_data; ++i) {
-      std::printf("TEST %d %s\n", pointsOf(query.data[i]->m_description), query.data[i]->m_name);
+      std::printf("TEST %d %s %s\n", pointsOf(query.data[i]->m_description),
+                  visibilityOf(query.data[i]->m_description).c_str(), query.data[i]->m_name);
     }
   }
   void test_run_start() override {}
