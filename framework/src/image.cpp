@@ -38,12 +38,18 @@ bool isWritableImagePath(const std::string& path) {
   return ext == ".png" || ext == ".exr" || ext == ".hdr" || ext == ".jpg" || ext == ".jpeg";
 }
 
-void writeImage(const Image& image, const std::string& path, const ImageMetadata& metadata) {
-  if (!isWritableImagePath(path)) {
-    throw Error(path + ": unsupported image format (use .png, .exr, .hdr or .jpg)");
+void writeImage(const Image& image, const std::string& finalPath, const ImageMetadata& metadata) {
+  if (!isWritableImagePath(finalPath)) {
+    throw Error(finalPath + ": unsupported image format (use .png, .exr, .hdr or .jpg)");
   }
+  // Write a temporary file beside the target and rename it: an interrupted
+  // write never leaves a truncated image behind.
+  const std::filesystem::path target(finalPath);
+  std::string partialName = ".";
+  partialName.append(target.stem().string()).append(".partial").append(target.extension().string());
+  const std::string path = (target.parent_path() / partialName).string();
   auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw Error(path + ": cannot create image writer: " + OIIO::geterror());
+  if (!out) throw Error(finalPath + ": cannot create image writer: " + OIIO::geterror());
 
   const std::string ext = lowerExtension(path);
   const bool linear = isFloatFormat(ext);
@@ -53,7 +59,7 @@ void writeImage(const Image& image, const std::string& path, const ImageMetadata
   if (linear) spec.attribute("compression", "zip");
   for (const auto& [key, value] : metadata) spec.attribute(key, value);
 
-  if (!out->open(path, spec)) throw Error(path + ": cannot write: " + out->geterror());
+  if (!out->open(path, spec)) throw Error(finalPath + ": cannot write: " + out->geterror());
   bool ok;
   if (linear) {
     ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
@@ -67,7 +73,15 @@ void writeImage(const Image& image, const std::string& path, const ImageMetadata
     }
     ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
   }
-  if (!ok || !out->close()) throw Error(path + ": cannot write: " + out->geterror());
+  if (!ok || !out->close()) {
+    std::string why = out->geterror();
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+    throw Error(finalPath + ": cannot write: " + why);
+  }
+  std::error_code renamed;
+  std::filesystem::rename(path, finalPath, renamed);
+  if (renamed) throw Error(finalPath + ": cannot write: " + renamed.message());
 }
 
 Image readImage(const std::string& path) {

@@ -178,7 +178,7 @@ TEST_CASE("scene: the course's COLLADA Cornell boxes load with their materials, 
   }
 }
 
-TEST_CASE("render: 1 and 2 threads, and any tile size, give bit-identical images") {
+TEST_CASE("render: 1, 2 and 8 threads, and any tile size, give bit-identical images") {
   Scene scene = defaultScene();
   scene.render.width = 64;
   scene.render.height = 48;
@@ -189,10 +189,17 @@ TEST_CASE("render: 1 and 2 threads, and any tile size, give bit-identical images
   Image one = render(scene, options).image;
   options.threads = 2;
   Image two = render(scene, options).image;
+  options.threads = 8;
+  Image eight = render(scene, options).image;
   options.tileSize = 7;
   Image oddTiles = render(scene, options).image;
+  options.threads = 3;
+  options.tileSize = 64;
+  Image bigTiles = render(scene, options).image;
   CHECK(bitIdentical(one, two));
+  CHECK(bitIdentical(one, eight));
   CHECK(bitIdentical(one, oddTiles));
+  CHECK(bitIdentical(one, bigTiles));
   scene.render.seed = 1;
   CHECK_FALSE(bitIdentical(one, render(scene, options).image));  // the seed matters
 }
@@ -248,6 +255,8 @@ TEST_CASE("image: EXR round-trips exactly, PNG within one 8-bit step") {
     }
   }
   CHECK_THROWS_AS(readImage((dir / "no-such-image.exr").string()), Error);
+  // Written through a temporary file and a rename: nothing else is left behind.
+  CHECK_FALSE(std::filesystem::exists(dir / ".pathlab-test.partial.exr"));
   CHECK_THROWS_AS(writeImage(image, (dir / "x.unknown").string()), Error);
 }
 
