@@ -167,7 +167,7 @@ int runDebug(const DebugArgs& args) {
                            ? "debug-task" + std::to_string(args.task) + "-" + args.view + ".png"
                            : args.output;
   checkOutputPath(output);
-  DebugViewRequest request{scene, scene.render.width, scene.render.height};
+  DebugViewRequest request(scene, scene.render.width, scene.render.height);
   if (args.threads) request.threads = checkedCount("-t", *args.threads, 1, 1024);
   if (args.depth) request.depth = checkedCount("--depth", *args.depth, 0, 64);
   if (!args.pixel.empty()) {

@@ -33,6 +33,17 @@ float srgbToLinear(float encoded) {
   return std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }
 
+std::vector<uint8_t> encodeSrgb8(const Image& image, int channels, float scale) {
+  std::vector<uint8_t> bytes(image.pixels.size() * size_t(channels), 255);
+  for (size_t i = 0; i < image.pixels.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      const float v = std::clamp(linearToSrgb(scale * image.pixels[i][c]), 0.0f, 1.0f);
+      bytes[size_t(channels) * i + size_t(c)] = uint8_t(std::lround(v * 255.0f));
+    }
+  }
+  return bytes;
+}
+
 bool isWritableImagePath(const std::string& path) {
   std::string ext = lowerExtension(path);
   return ext == ".png" || ext == ".exr" || ext == ".hdr" || ext == ".jpg" || ext == ".jpeg";
@@ -64,14 +75,7 @@ void writeImage(const Image& image, const std::string& finalPath, const ImageMet
   if (linear) {
     ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
   } else {
-    std::vector<uint8_t> bytes(image.pixels.size() * 3);
-    for (size_t i = 0; i < image.pixels.size(); ++i) {
-      for (int c = 0; c < 3; ++c) {
-        float v = std::clamp(linearToSrgb(image.pixels[i][c]), 0.0f, 1.0f);
-        bytes[3 * i + size_t(c)] = uint8_t(std::lround(v * 255.0f));
-      }
-    }
-    ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+    ok = out->write_image(OIIO::TypeDesc::UINT8, encodeSrgb8(image).data());
   }
   if (!ok || !out->close()) {
     std::string why = out->geterror();

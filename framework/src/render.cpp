@@ -79,82 +79,97 @@ Color renderSample(TraceContext& context, const RenderOptions& options, const Ca
                           : traceRadiance(context, options.integrator, ray, sampler);
 }
 
-RenderResult render(const Scene& scene, const RenderOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  const RenderSettings& settings = scene.render;
-  const int width = settings.width, height = settings.height;
-  const CameraBasis basis = cameraBasis(scene.camera);
-  const Accelerator accelerator(scene);
-  const Lights lights = Lights::fromScene(scene, options.environmentSampling);
+ProgressiveRender::ProgressiveRender(const Scene& scene, const RenderOptions& options)
+    : scene_(scene),
+      options_(options),
+      basis_(cameraBasis(scene.camera)),
+      accelerator_(scene),
+      lights_(Lights::fromScene(scene, options.environmentSampling)),
+      start_(std::chrono::steady_clock::now()),
+      sum_(size_t(scene.render.width) * size_t(scene.render.height), Color(0.0f)),
+      count_(sum_.size(), 0),
+      progress_(std::make_unique<ProgressBar>(uint64_t(sum_.size()) * uint64_t(scene.render.samplesPerPixel),
+                                              options.progress)) {}
 
-  std::vector<Color> sum(size_t(width) * size_t(height), Color(0.0f));
-  std::vector<int> count(sum.size(), 0);
-  std::atomic<uint64_t> rays{0}, samples{0}, nonFinite{0};
-  std::atomic<uint64_t> firstNonFinite{UINT64_MAX};
+ProgressiveRender::~ProgressiveRender() = default;
 
-  ProgressBar progress(uint64_t(width) * uint64_t(height) * uint64_t(settings.samplesPerPixel),
-                       options.progress);
-
-  // Passes of 1, 1, 2, 4, ... 64 samples per pixel: the image refines
-  // everywhere at once, so an interrupted render is still a whole picture.
-  int passBegin = 0, passSize = 1;
-  bool first = true;
-  while (passBegin < settings.samplesPerPixel) {
-    if (options.cancel && options.cancel->load()) break;
-    const int passEnd = std::min(settings.samplesPerPixel, passBegin + passSize);
-    forEachTile(width, height, options.tileSize, options.threads, [&](const Tile& tile) {
-      TraceContext context = makeTraceContext(scene, accelerator, lights, options);
-      uint64_t tileSamples = 0;
-      for (int y = tile.begin.y; y < tile.end.y; ++y) {
-        for (int x = tile.begin.x; x < tile.end.x; ++x) {
-          const uint32_t pixelIndex = uint32_t(y) * uint32_t(width) + uint32_t(x);
-          Color& pixelSum = sum[pixelIndex];
-          context.pixel = {x, y};
-          for (int s = passBegin; s < passEnd; ++s) {
-            Color radiance = renderSample(context, options, basis, uint32_t(s));
-            if (isFinite(radiance)) {
-              pixelSum += radiance;
-            } else {
-              // Never clamp: report. A NaN sample counts as a sample of zero.
-              nonFinite.fetch_add(1, std::memory_order_relaxed);
-              uint64_t seen = firstNonFinite.load();
-              while (pixelIndex < seen && !firstNonFinite.compare_exchange_weak(seen, pixelIndex)) {
-              }
+bool ProgressiveRender::step() {
+  const int width = scene_.render.width, height = scene_.render.height;
+  if (done() || cancelled_) return false;
+  if (options_.cancel && options_.cancel->load()) {
+    cancelled_ = true;
+    return false;
+  }
+  const int passBegin = passBegin_;
+  const int passEnd = std::min(scene_.render.samplesPerPixel, passBegin + passSize_);
+  forEachTile(width, height, options_.tileSize, options_.threads, [&](const Tile& tile) {
+    TraceContext context = makeTraceContext(scene_, accelerator_, lights_, options_);
+    uint64_t tileSamples = 0;
+    for (int y = tile.begin.y; y < tile.end.y; ++y) {
+      for (int x = tile.begin.x; x < tile.end.x; ++x) {
+        const uint32_t pixelIndex = uint32_t(y) * uint32_t(width) + uint32_t(x);
+        Color& pixelSum = sum_[pixelIndex];
+        context.pixel = {x, y};
+        for (int s = passBegin; s < passEnd; ++s) {
+          Color radiance = renderSample(context, options_, basis_, uint32_t(s));
+          if (isFinite(radiance)) {
+            pixelSum += radiance;
+          } else {
+            // Never clamp: report. A NaN sample counts as a sample of zero.
+            nonFinite_.fetch_add(1, std::memory_order_relaxed);
+            uint64_t seen = firstNonFinite_.load();
+            while (pixelIndex < seen && !firstNonFinite_.compare_exchange_weak(seen, pixelIndex)) {
             }
           }
-          count[pixelIndex] = passEnd;
-          tileSamples += uint64_t(passEnd - passBegin);
         }
+        count_[pixelIndex] = passEnd;
+        tileSamples += uint64_t(passEnd - passBegin);
       }
-      rays.fetch_add(context.rays, std::memory_order_relaxed);
-      samples.fetch_add(tileSamples, std::memory_order_relaxed);
-      progress.add(tileSamples);
-    }, options.cancel);
-    passBegin = passEnd;
-    if (!first) passSize = std::min(passSize * 2, 64);
-    first = false;
+    }
+    rays_.fetch_add(context.rays, std::memory_order_relaxed);
+    samples_.fetch_add(tileSamples, std::memory_order_relaxed);
+    progress_->add(tileSamples);
+  }, options_.cancel);
+  if (options_.cancel && options_.cancel->load()) {
+    cancelled_ = true;  // some tiles of this pass may be missing
+    return false;
   }
+  // Passes of 1, 1, 2, 4, ...: the image refines everywhere at once, so an
+  // interrupted render is still a whole picture.
+  passBegin_ = passEnd;
+  if (passes_++ > 0) passSize_ = std::min(passSize_ * 2, std::max(1, options_.maxPassSpp));
+  return !done();
+}
 
-  RenderResult result;
-  result.image = Image(width, height);
-  int minCount = settings.samplesPerPixel;
-  for (size_t i = 0; i < sum.size(); ++i) {
-    if (count[i] > 0) result.image.pixels[i] = sum[i] / float(count[i]);
-    minCount = std::min(minCount, count[i]);
+Image ProgressiveRender::image() const {
+  Image image(scene_.render.width, scene_.render.height);
+  for (size_t i = 0; i < sum_.size(); ++i) {
+    if (count_[i] > 0) image.pixels[i] = sum_[i] / float(count_[i]);
   }
-  RenderStats& stats = result.stats;
-  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  stats.samples = samples.load();
-  stats.rays = rays.load();
-  stats.nonFiniteSamples = nonFinite.load();
+  return image;
+}
+
+RenderStats ProgressiveRender::stats() const {
+  RenderStats stats;
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  stats.samples = samples_.load();
+  stats.rays = rays_.load();
+  stats.nonFiniteSamples = nonFinite_.load();
   if (stats.nonFiniteSamples > 0) {
-    uint64_t p = firstNonFinite.load();
-    stats.firstNonFinitePixel = IVec2(int(p % uint64_t(width)), int(p / uint64_t(width)));
+    const uint64_t p = firstNonFinite_.load(), width = uint64_t(scene_.render.width);
+    stats.firstNonFinitePixel = IVec2(int(p % width), int(p / width));
   }
-  stats.completedSpp = minCount;
-  stats.buildSeconds = accelerator.buildSeconds();
-  stats.interrupted = minCount < settings.samplesPerPixel;
-  return result;
+  stats.completedSpp = count_.empty() ? 0 : *std::min_element(count_.begin(), count_.end());
+  stats.buildSeconds = accelerator_.buildSeconds();
+  stats.interrupted = stats.completedSpp < scene_.render.samplesPerPixel;
+  return stats;
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options) {
+  ProgressiveRender progressive(scene, options);
+  while (progressive.step()) {
+  }
+  return {progressive.image(), progressive.stats()};
 }
 
 }  // namespace pathlab

@@ -5,14 +5,14 @@ namespace pathlab {
 std::optional<Hit> TraceContext::intersect(const Ray& ray, Interval range) {
   ++rays;
   std::optional<Hit> hit = accelerator.intersect(ray, range);
-  if (log) log->push_back({ray, range, false, hit.has_value(), hit ? hit->t : kInfinity});
+  if (log) log->push_back({ray, range, false, hit.has_value(), hit.value_or(Hit{})});
   return hit;
 }
 
 bool TraceContext::occluded(const Ray& ray, Interval range) {
   ++rays;
   const bool blocked = accelerator.occluded(ray, range);
-  if (log) log->push_back({ray, range, true, blocked, kInfinity});
+  if (log) log->push_back({ray, range, true, blocked, Hit{}});
   return blocked;
 }
 

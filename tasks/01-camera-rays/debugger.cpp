@@ -33,13 +33,14 @@ DebugOutput samplesView(const DebugViewRequest& request) {
   constexpr int kPixels = 4;  // a kPixels x kPixels neighbourhood
   const int cell = std::max(16, std::min(request.width, request.height) / kPixels);
   const int renderWidth = request.scene.render.width, renderHeight = request.scene.render.height;
-  IVec2 centre = request.pixel.x < 0 ? IVec2(renderWidth / 2, renderHeight / 2) : request.pixel;
+  const IVec2 centre = request.inspectedPixel();
   const IVec2 first = glm::clamp(centre - IVec2(kPixels / 2), IVec2(0),
                                  glm::max(IVec2(0), IVec2(renderWidth, renderHeight) - IVec2(kPixels)));
   const int spp = std::min(request.scene.render.samplesPerPixel, 256);
 
   Image image(kPixels * cell, kPixels * cell, Color(0.02f));
   const Color gridColor(0.3f), inside(0.2f, 0.8f, 1.0f), outside(1.0f, 0.05f, 0.05f);
+  int outsideCount = 0;
   for (int py = 0; py < kPixels; ++py) {
     for (int px = 0; px < kPixels; ++px) {
       const IVec2 pixel = first + IVec2(px, py);
@@ -52,20 +53,25 @@ DebugOutput samplesView(const DebugViewRequest& request) {
         Point2 p = pixelSamplePosition(pixel, sampler.next2D());
         bool in = p.x >= float(pixel.x) && p.x < float(pixel.x + 1) && p.y >= float(pixel.y) &&
                   p.y < float(pixel.y + 1);
+        if (!in) ++outsideCount;
         Point2 drawn = (p - Point2(first)) * float(cell);
         drawDot(image, drawn, std::max(1.5f, float(cell) / 40.0f), in ? inside : outside);
       }
     }
   }
-  return {image, ""};
+  const std::string report = "pixel " + std::to_string(centre.x) + "," + std::to_string(centre.y) + " and " +
+                             std::to_string(kPixels * kPixels - 1) + " neighbours, " + std::to_string(spp) +
+                             " samples each: " + std::to_string(outsideCount) + " outside their pixel\n";
+  return {image, report};
 }
 
 }  // namespace
 
 void addCameraRayViews(std::vector<DebugView>& views) {
-  views.push_back({1, "directions", "camera ray direction per pixel as colour 0.5 + 0.5 d", directionsView});
+  views.push_back({1, "directions", "camera ray direction per pixel as colour 0.5 + 0.5 d", directionsView,
+                   kCameraImage});
   views.push_back({1, "samples", "sample positions in the inspected pixel and its neighbours (red: outside)",
-                   samplesView});
+                   samplesView, kUsesPixel});
 }
 
 }  // namespace pathlab

@@ -4,7 +4,9 @@
 //   normals       shading normal as colour 0.5 + 0.5 n (black: no hit)
 //   depth         hit distance, near = bright, far = dark (blue: no hit)
 //   primitive-id  one colour per primitive (black: no hit)
+// Each prints the hit record of the inspected pixel (yellow square).
 #include <algorithm>
+#include <cstdio>
 #include <optional>
 #include <vector>
 
@@ -31,6 +33,28 @@ std::vector<std::optional<Hit>> primaryHits(const DebugViewRequest& request) {
   return hits;
 }
 
+// The hit record of the inspected pixel's centre ray, as task 2 computed it.
+std::string hitRecord(const DebugViewRequest& request, const std::vector<std::optional<Hit>>& hits) {
+  const IVec2 p = request.inspectedPixel();
+  char line[320];
+  if (p.x >= request.width || p.y >= request.height) return "";
+  const std::optional<Hit>& hit = hits[size_t(p.y) * size_t(request.width) + size_t(p.x)];
+  if (!hit) {
+    std::snprintf(line, sizeof line, "pixel %d,%d: no hit\n", p.x, p.y);
+    return line;
+  }
+  const PrimitiveRef& ref = request.scene.primitives[hit->primitive];
+  std::snprintf(line, sizeof line,
+                "pixel %d,%d: t = %.5g, point (%.4f, %.4f, %.4f)\n"
+                "  geometric normal (%.4f, %.4f, %.4f), shading normal (%.4f, %.4f, %.4f)\n"
+                "  primitive %u (%s %u), material \"%s\"\n",
+                p.x, p.y, double(hit->t), double(hit->point.x), double(hit->point.y), double(hit->point.z),
+                double(hit->geometricNormal.x), double(hit->geometricNormal.y), double(hit->geometricNormal.z),
+                double(hit->shadingNormal.x), double(hit->shadingNormal.y), double(hit->shadingNormal.z), hit->primitive,
+                ref.isSphere() ? "sphere" : "triangle", ref.index, request.scene.materials[hit->material].name.c_str());
+  return line;
+}
+
 Color display(Vec3 v) {
   v = glm::clamp(v, 0.0f, 1.0f);
   return {srgbToLinear(v.x), srgbToLinear(v.y), srgbToLinear(v.z)};
@@ -42,7 +66,8 @@ DebugOutput normalsView(const DebugViewRequest& request) {
   for (size_t i = 0; i < hits.size(); ++i) {
     if (hits[i]) image.pixels[i] = display(0.5f * (hits[i]->shadingNormal + Vec3(1.0f)));
   }
-  return {image, ""};
+  markInspectedPixel(image, request);
+  return {image, hitRecord(request, hits)};
 }
 
 DebugOutput depthView(const DebugViewRequest& request) {
@@ -57,7 +82,10 @@ DebugOutput depthView(const DebugViewRequest& request) {
     float s = farthest > nearest ? (hits[i]->t - nearest) / (farthest - nearest) : 0.0f;
     image.pixels[i] = display(Vec3(1.0f - 0.85f * s));
   }
-  return {image, ""};
+  markInspectedPixel(image, request);
+  char range[80];
+  std::snprintf(range, sizeof range, "hit distances from %.4g to %.4g\n", double(nearest), double(farthest));
+  return {image, range + hitRecord(request, hits)};
 }
 
 DebugOutput primitiveIdView(const DebugViewRequest& request) {
@@ -66,15 +94,17 @@ DebugOutput primitiveIdView(const DebugViewRequest& request) {
   for (size_t i = 0; i < hits.size(); ++i) {
     if (hits[i]) image.pixels[i] = display(idColor(hits[i]->primitive));
   }
-  return {image, ""};
+  markInspectedPixel(image, request);
+  return {image, hitRecord(request, hits)};
 }
 
 }  // namespace
 
 void addIntersectionViews(std::vector<DebugView>& views) {
-  views.push_back({2, "normals", "shading normal as colour 0.5 + 0.5 n", normalsView});
-  views.push_back({2, "depth", "hit distance: near bright, far dark, no hit blue", depthView});
-  views.push_back({2, "primitive-id", "one colour per primitive", primitiveIdView});
+  const unsigned inputs = kCameraImage | kUsesPixel;
+  views.push_back({2, "normals", "shading normal as colour 0.5 + 0.5 n; the pixel's hit record", normalsView, inputs});
+  views.push_back({2, "depth", "hit distance: near bright, far dark, no hit blue", depthView, inputs});
+  views.push_back({2, "primitive-id", "one colour per primitive", primitiveIdView, inputs});
 }
 
 }  // namespace pathlab

@@ -1,8 +1,11 @@
 // Task 3's visual debugger (students don't edit this file: it shows what
 // their bvh.cpp does). One camera ray per pixel centre.
 //   heatmap  box tests per ray as colour, with a legend and the image mean
-//   boxes    the boxes of the tree at --depth N drawn over the scene
-// Both print the build statistics (nodes, depth, leaf sizes, SAH cost).
+//   boxes      the boxes of the tree at --depth N drawn over the scene
+//   traversal  the inspected pixel's ray and the leaves your intersectClosest
+//              tested, in the order it tested them (1 = first), each with
+//              the distance at which the ray enters its box
+// All print the build statistics (nodes, depth, leaf sizes, SAH cost).
 #include <algorithm>
 #include <cstdio>
 #include <vector>
@@ -71,20 +74,9 @@ DebugOutput heatmapView(const DebugViewRequest& request) {
 
 DebugOutput boxesView(const DebugViewRequest& request) {
   const Accelerator accelerator(request.scene);
-  const Scene& scene = request.scene;
-  const CameraBasis basis = cameraBasis(scene.camera);
-  const int width = request.width, height = request.height;
-  // The scene, dimmed, as the eye-light preview sees it.
-  Image image(width, height);
-  forEachPixel(width, height, request.threads, [&](int x, int y) {
-    Ray ray = generateCameraRay(scene.camera, basis, Point2(float(x) + 0.5f, float(y) + 0.5f), {width, height});
-    if (auto hit = accelerator.intersect(ray, Interval{0.0f, kInfinity})) {
-      float cosine = std::abs(glm::dot(hit->shadingNormal, ray.direction));
-      image.at(x, y) = 0.35f * scene.materials[hit->material].albedo * cosine;
-    }
-  });
+  Image image = scenePreview(request, accelerator, 0.35f);
   const Bvh& bvh = accelerator.bvh();
-  const CameraProjection projection(scene.camera, {width, height});
+  const CameraProjection projection(request.drawingCamera(), {request.width, request.height});
   size_t drawn = 0;
   if (!bvh.nodes.empty()) {
     // Nodes at the chosen depth in colour; leaves that end above it in grey.
@@ -107,11 +99,68 @@ DebugOutput boxesView(const DebugViewRequest& request) {
                      std::to_string(request.depth) + "\n"};
 }
 
+DebugOutput traversalView(const DebugViewRequest& request) {
+  const Accelerator accelerator(request.scene);
+  const Scene& scene = request.scene;
+  Image image = scenePreview(request, accelerator, 0.3f);
+  const IVec2 pixel = request.inspectedPixel();
+  const Ray ray = generateCameraRay(scene.camera, cameraBasis(scene.camera), Point2(pixel) + Point2(0.5f),
+                                    {scene.render.width, scene.render.height});
+  if (!accelerator.usesBvh()) return {image, buildReport(accelerator)};
+  const Bvh& bvh = accelerator.bvh();
+
+  // Trace the pixel's ray through your intersectClosest, recording the
+  // primitives it tests; each belongs to one leaf.
+  std::vector<uint32_t> leafOfSlot(bvh.primitives.size(), 0);
+  for (uint32_t i = 0; i < bvh.nodes.size(); ++i) {
+    const BvhNode& node = bvh.nodes[i];
+    if (node.isLeaf())
+      for (uint32_t k = 0; k < node.count; ++k) leafOfSlot[node.leftOrFirst + k] = i;
+  }
+  LeafGeometry geometry(scene, bvh.primitives);
+  std::vector<uint32_t> tested;
+  geometry.recordTests(&tested);
+  TraversalStats stats;
+  const std::optional<PrimitiveHit> hit = intersectClosest(bvh, geometry, ray, Interval{0.0f, kInfinity}, &stats);
+  std::vector<uint32_t> leaves;  // in the order first tested
+  for (uint32_t slot : tested)
+    if (std::find(leaves.begin(), leaves.end(), leafOfSlot[slot]) == leaves.end()) leaves.push_back(leafOfSlot[slot]);
+
+  const CameraProjection projection(request.drawingCamera(), {request.width, request.height});
+  const float rayEnd = hit ? hit->t : glm::length(bvh.nodes[0].bounds.max - bvh.nodes[0].bounds.min) * 2.0f;
+  projection.drawSegment(image, ray.origin, ray.at(rayEnd), Color(1.0f, 1.0f, 0.2f));
+  char line[160];
+  std::snprintf(line, sizeof line, "pixel %d,%d: %u nodes visited, %u box tests, %u primitive tests, %s\n", pixel.x,
+                pixel.y, stats.nodesVisited, stats.boxTests, stats.primitiveTests,
+                hit ? ("closest hit t = " + std::to_string(hit->t)).c_str() : "no hit");
+  std::string report = buildReport(accelerator) + line;
+  report += "leaves in the order tested (entry distance; front to back is ascending):\n";
+  const Vec3 inverse = 1.0f / ray.direction;
+  for (size_t k = 0; k < leaves.size(); ++k) {
+    const BvhNode& leaf = bvh.nodes[leaves[k]];
+    const Color color = colorMap(leaves.size() > 1 ? float(k) / float(leaves.size() - 1) : 0.0f);
+    projection.drawBox(image, leaf.bounds, color);
+    const std::optional<float> entry = intersectBox(leaf.bounds, ray, inverse, Interval{0.0f, kInfinity});
+    const bool holdsHit = hit && std::find(bvh.primitives.begin() + leaf.leftOrFirst,
+                                           bvh.primitives.begin() + leaf.leftOrFirst + leaf.count,
+                                           hit->primitive) != bvh.primitives.begin() + leaf.leftOrFirst + leaf.count;
+    std::snprintf(line, sizeof line, "  %zu. node %u (%u primitives) enters at t = %.4g%s\n", k + 1, leaves[k],
+                  leaf.count, entry ? double(*entry) : -1.0, holdsHit ? "  <- the closest hit" : "");
+    report += line;
+  }
+  drawText(image, Point2(6, 6), std::to_string(leaves.size()) + " LEAVES TESTED, DARK FIRST", Color(0.95f), 2);
+  markInspectedPixel(image, request);
+  return {image, report};
+}
+
 }  // namespace
 
 void addBvhViews(std::vector<DebugView>& views) {
-  views.push_back({3, "heatmap", "box tests per camera ray as colour, legend and mean", heatmapView});
-  views.push_back({3, "boxes", "BVH boxes at --depth N over the scene, build statistics", boxesView});
+  views.push_back({3, "heatmap", "box tests per camera ray as colour, legend and mean", heatmapView, kCameraImage});
+  views.push_back({3, "boxes", "BVH boxes at --depth N over the scene, build statistics", boxesView,
+                   kCameraImage | kUsesDepth | kUsesViewCamera});
+  views.push_back({3, "traversal", "the pixel's ray and the leaves your traversal tested, in order", traversalView,
+                   kCameraImage | kUsesPixel | kUsesViewCamera});
 }
 
 }  // namespace pathlab

@@ -4,10 +4,12 @@
 //   shadow-rays  the inspected pixel's shadow rays drawn over the direct
 //                image: green reached the light, red was blocked
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "pathlab/debug_views.h"
 #include "pathlab/draw.h"
+#include "pathlab/inspect.h"
 #include "pathlab/render.h"
 
 namespace pathlab {
@@ -20,60 +22,65 @@ Scene atResolution(const Scene& scene, int width, int height) {
   return copy;
 }
 
-DebugOutput directView(const DebugViewRequest& request) {
-  const Scene scene = atResolution(request.scene, request.width, request.height);
+// Renders what task 4 computes, from `camera` (the scene's, or the GUI's orbit view).
+RenderResult renderDirect(const DebugViewRequest& request, const Camera& camera) {
+  Scene scene = atResolution(request.scene, request.width, request.height);
+  scene.camera = camera;
   RenderOptions options;
   options.integrator = Integrator::Direct;
   options.progress = false;
   options.threads = request.threads;
-  RenderResult result = render(scene, options);
+  return render(scene, options);
+}
+
+DebugOutput directView(const DebugViewRequest& request) {
   char report[96];
   std::snprintf(report, sizeof report, "direct lighting only: %d spp, %d samples per area light\n",
-                scene.render.samplesPerPixel, scene.render.lightSamples);
-  return {result.image, report};
+                request.scene.render.samplesPerPixel, request.scene.render.lightSamples);
+  return {renderDirect(request, request.scene.camera).image, report};
 }
 
 DebugOutput shadowRaysView(const DebugViewRequest& request) {
   const Scene scene = atResolution(request.scene, request.width, request.height);
-  DebugOutput output = directView(request);
-  for (Color& c : output.image.pixels) c *= 0.5f;  // dim, so the rays stand out
+  Image image = renderDirect(request, request.drawingCamera()).image;
+  for (Color& c : image.pixels) c *= 0.5f;  // dim, so the rays stand out
 
-  const IVec2 pixel = request.pixel.x < 0 ? IVec2(scene.render.width / 2, scene.render.height / 2) : request.pixel;
+  // Re-trace the pixel with the render's random numbers, recording its rays.
+  const IVec2 pixel = request.inspectedPixel();
   const Accelerator accelerator(scene);
   const Lights lights = Lights::fromScene(scene);
   RenderOptions options;
   options.integrator = Integrator::Direct;
-  TraceContext context = makeTraceContext(scene, accelerator, lights, options);
-  std::vector<TracedRay> log;
-  context.log = &log;
-  context.pixel = pixel;
-  const CameraBasis basis = cameraBasis(scene.camera);
   const int samples = std::min(scene.render.samplesPerPixel, 16);
-  for (int s = 0; s < samples; ++s) renderSample(context, options, basis, uint32_t(s));
+  const PixelInspection inspection = inspectPixel(scene, accelerator, lights, options, pixel, samples);
 
-  const CameraProjection projection(scene.camera, {scene.render.width, scene.render.height});
+  const CameraProjection projection(request.drawingCamera(), {request.width, request.height});
   int blocked = 0, free = 0;
-  for (const TracedRay& traced : log) {
-    if (!traced.shadow) continue;
-    const float end = std::isfinite(traced.range.max) ? traced.range.max : 1e3f;
-    projection.drawSegment(output.image, traced.ray.origin, traced.ray.at(end),
-                           traced.hit ? Color(0.9f, 0.05f, 0.05f) : Color(0.1f, 0.9f, 0.1f));
-    traced.hit ? ++blocked : ++free;
+  for (const InspectedSample& sample : inspection.samples) {
+    for (const TracedRay& traced : sample.rays) {
+      if (!traced.shadow) {
+        if (request.viewCamera && traced.hit) projection.drawSegment(image, traced.ray.origin, traced.record.point, Color(1.0f, 1.0f, 0.2f));
+        continue;
+      }
+      const float end = std::isfinite(traced.range.max) ? traced.range.max : 1e3f;
+      projection.drawSegment(image, traced.ray.origin, traced.ray.at(end),
+                             traced.hit ? Color(0.9f, 0.05f, 0.05f) : Color(0.1f, 0.9f, 0.1f));
+      traced.hit ? ++blocked : ++free;
+    }
   }
-  drawRectOutline(output.image, Point2(pixel) - Point2(3.0f), Point2(pixel) + Point2(4.0f), Color(1.0f, 1.0f, 0.2f));
+  markInspectedPixel(image, request);
   char report[160];
   std::snprintf(report, sizeof report, "pixel %d,%d, %d samples: %d shadow rays reached a light, %d were blocked\n",
                 pixel.x, pixel.y, samples, free, blocked);
-  output.report += report;
-  return output;
+  return {image, report + formatInspection(inspection)};
 }
 
 }  // namespace
 
 void addDirectLightingViews(std::vector<DebugView>& views) {
-  views.push_back({4, "direct", "emission and direct light only (no bounces)", directView});
+  views.push_back({4, "direct", "emission and direct light only (no bounces)", directView, kCameraImage});
   views.push_back({4, "shadow-rays", "the inspected pixel's shadow rays: green reached the light, red blocked",
-                   shadowRaysView});
+                   shadowRaysView, kCameraImage | kUsesPixel | kUsesViewCamera});
 }
 
 }  // namespace pathlab

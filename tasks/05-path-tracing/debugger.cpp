@@ -4,12 +4,19 @@
 //            side by side, and the full image. Bounce k is the difference
 //            of renders with -m k and -m k-1: paths use the same random
 //            numbers, so a shorter path is the start of a longer one.
+//   paths    the inspected pixel's first 8 paths drawn in the scene:
+//            bounce segments coloured by bounce (camera ray white), shadow
+//            rays green (reached the light) or red (blocked); every ray,
+//            hit, BSDF sample and light sample listed in the report. The
+//            GUI draws them from an orbiting viewpoint.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
 #include "pathlab/debug_views.h"
 #include "pathlab/draw.h"
+#include "pathlab/inspect.h"
 #include "pathlab/render.h"
 
 namespace pathlab {
@@ -59,10 +66,47 @@ DebugOutput bouncesView(const DebugViewRequest& request) {
   return {sheet, report + "\n"};
 }
 
+DebugOutput pathsView(const DebugViewRequest& request) {
+  Scene scene = request.scene;
+  scene.render.width = request.width;
+  scene.render.height = request.height;
+  const Accelerator accelerator(scene);
+  const Lights lights = Lights::fromScene(scene);
+  Image image = scenePreview(request, accelerator, 0.3f);
+  const int samples = std::min(scene.render.samplesPerPixel, 8);
+  const PixelInspection inspection =
+      inspectPixel(scene, accelerator, lights, RenderOptions{}, request.inspectedPixel(), samples);
+
+  const CameraProjection projection(request.drawingCamera(), {request.width, request.height});
+  const Aabb bounds = accelerator.usesBvh() ? accelerator.bvh().nodes[0].bounds : Aabb{};
+  const float escape = std::max(1.0f, glm::length(bounds.max - bounds.min));  // how far to draw a miss
+  const Color camera(1.0f), reached(0.1f, 0.9f, 0.1f), blocked(0.9f, 0.05f, 0.05f);
+  for (const InspectedSample& sample : inspection.samples) {
+    int bounce = 0;
+    for (const TracedRay& traced : sample.rays) {
+      if (traced.shadow) {
+        const float end = std::isfinite(traced.range.max) ? traced.range.max : escape;
+        projection.drawSegment(image, traced.ray.origin, traced.ray.at(end), traced.hit ? blocked : reached);
+        continue;
+      }
+      const Color color = bounce == 0 ? camera : colorMap(0.15f + 0.85f * float(bounce - 1) / float(std::max(1, scene.render.maxDepth - 1)));
+      const Point3 end = traced.hit ? traced.record.point : traced.ray.at(escape);
+      projection.drawSegment(image, traced.ray.origin, end, color);
+      ++bounce;
+    }
+  }
+  markInspectedPixel(image, request);
+  drawText(image, Point2(6, 6), std::to_string(samples) + " PATHS, -M " + std::to_string(scene.render.maxDepth),
+           Color(0.95f), 2);
+  return {image, formatInspection(inspection)};
+}
+
 }  // namespace
 
 void addPathTracingViews(std::vector<DebugView>& views) {
   views.push_back({5, "bounces", "light after exactly 0, 1, 2, 3, 4 bounces, and the full image", bouncesView});
+  views.push_back({5, "paths", "the pixel's paths in the scene, and every ray, hit and sample in words", pathsView,
+                   kCameraImage | kUsesPixel | kUsesViewCamera});
 }
 
 }  // namespace pathlab

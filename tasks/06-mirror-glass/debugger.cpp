@@ -33,7 +33,7 @@ int cellOf(const Vec3& local) {
 DebugOutput lobeView(const DebugViewRequest& request) {
   const Scene& scene = request.scene;
   const int width = scene.render.width, height = scene.render.height;
-  const IVec2 pixel = request.pixel.x < 0 ? IVec2(width / 2, height / 2) : request.pixel;
+  const IVec2 pixel = request.inspectedPixel();
   const Accelerator accelerator(scene);
   const CameraBasis basis = cameraBasis(scene.camera);
   const Ray ray = generateCameraRay(scene.camera, basis, Point2(pixel) + Point2(0.5f), {width, height});
@@ -114,7 +114,7 @@ DebugOutput lobeView(const DebugViewRequest& request) {
 }  // namespace
 
 void addMirrorGlassViews(std::vector<DebugView>& views) {
-  views.push_back({6, "lobe", "BSDF lobe at the inspected pixel: sampled directions beside the pdf", lobeView});
+  views.push_back({6, "lobe", "BSDF lobe at the inspected pixel: sampled directions beside the pdf", lobeView, kUsesPixel});
 }
 
 }  // namespace pathlab

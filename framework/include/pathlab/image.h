@@ -3,6 +3,7 @@
 // EXR/HDR are written linear float, exactly as rendered.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -36,6 +37,10 @@ void writeImage(const Image& image, const std::string& path, const ImageMetadata
 // Reads any format OpenImageIO knows into linear RGB (8-bit files are
 // decoded from sRGB). Throws pathlab::Error naming the path on failure.
 Image readImage(const std::string& path);
+
+// The image as 8-bit sRGB bytes, 3 (RGB) or 4 (RGBA, alpha 255) per pixel,
+// after multiplying by `scale` (exposure) and clamping, as PNGs store it.
+std::vector<uint8_t> encodeSrgb8(const Image& image, int channels = 3, float scale = 1.0f);
 
 // sRGB transfer function, one channel.
 float linearToSrgb(float linear);

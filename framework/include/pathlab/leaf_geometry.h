@@ -23,8 +23,13 @@ class LeafGeometry {
   uint32_t size() const { return uint32_t(slots_.size()); }
   uint32_t primitive(uint32_t slot) const { return slots_[slot].primitive; }
 
+  // The debugger's record of a traversal: when set, every slot tested is
+  // appended in the order the traversal tests it.
+  void recordTests(std::vector<uint32_t>* log) { testLog_ = log; }
+
   // The hit of `ray` with the primitive in `slot`, within `range` (task 2's tests).
   std::optional<PrimitiveHit> intersect(uint32_t slot, const Ray& ray, Interval range) const {
+    if (testLog_) [[unlikely]] testLog_->push_back(slot);
     const Slot& s = slots_[slot];
     if (s.isSphere) {
       std::optional<float> t = intersectSphere(ray, range, s.a, s.b.x);
@@ -48,6 +53,7 @@ class LeafGeometry {
   };
   static_assert(sizeof(Slot) == 48);
   std::vector<Slot> slots_;
+  std::vector<uint32_t>* testLog_ = nullptr;
 };
 
 // Bounds of every scene primitive, indexed like Scene::primitives.

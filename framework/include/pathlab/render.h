@@ -5,10 +5,13 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "pathlab/trace.h"
 #include "pathlab/image.h"
@@ -42,6 +45,7 @@ struct RenderOptions {
   EnvironmentSampling environmentSampling = EnvironmentSampling::Importance;
   int threads = 0;    // 0: all hardware threads
   int tileSize = 16;
+  int maxPassSpp = 64;  // the largest pass; the GUI uses small passes to refresh often
   bool progress = true;
   const std::atomic<bool>* cancel = nullptr;  // set from a signal handler to stop early
   RadianceFunction radiance;                  // optional override of the integrator
@@ -67,6 +71,43 @@ struct RenderResult {
 Color traceRadiance(TraceContext& context, Integrator integrator, const Ray& ray, Sampler& sampler);
 
 RenderResult render(const Scene& scene, const RenderOptions& options);
+
+class ProgressBar;
+
+// render(), one pass at a time: the GUI shows the image between passes.
+// Passes take 1, 1, 2, 4, ... samples per pixel (at most options.maxPassSpp);
+// the image after k samples per pixel is the same whatever the passes were.
+// `scene` must outlive this object.
+class ProgressiveRender {
+ public:
+  ProgressiveRender(const Scene& scene, const RenderOptions& options);
+  ~ProgressiveRender();
+
+  // Takes the next pass; false once every pixel has scene.render.samplesPerPixel
+  // samples or options.cancel was set (a cancelled pass leaves some pixels
+  // with fewer samples, which completedSpp() reports).
+  bool step();
+  bool done() const { return passBegin_ >= scene_.render.samplesPerPixel; }
+
+  Image image() const;       // the mean of each pixel's samples so far
+  RenderStats stats() const;  // so far
+  const Accelerator& accelerator() const { return accelerator_; }
+  const Lights& lights() const { return lights_; }
+
+ private:
+  const Scene& scene_;
+  RenderOptions options_;
+  CameraBasis basis_;
+  Accelerator accelerator_;
+  Lights lights_;
+  std::chrono::steady_clock::time_point start_;
+  std::vector<Color> sum_;
+  std::vector<int> count_;
+  int passBegin_ = 0, passSize_ = 1, passes_ = 0;
+  bool cancelled_ = false;
+  std::atomic<uint64_t> rays_{0}, samples_{0}, nonFinite_{0}, firstNonFinite_{UINT64_MAX};
+  std::unique_ptr<ProgressBar> progress_;
+};
 
 // The trace context render() gives each thread.
 TraceContext makeTraceContext(const Scene& scene, const Accelerator& accelerator, const Lights& lights,

@@ -20,7 +20,7 @@ struct TracedRay {
   Interval range;
   bool shadow = false;  // an occlusion query
   bool hit = false;     // blocked (shadow) or hit something
-  float t = kInfinity;  // distance of the hit, if any
+  Hit record;           // the closest hit (not for shadow rays); record.t is kInfinity on a miss
 };
 
 struct TraceContext {
