@@ -10,7 +10,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config git python3 libglm-dev libopenimageio-dev doctest-dev
-          nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libpugixml-dev libembree-dev)
+          nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libpugixml-dev libembree-dev
+          libglfw3-dev libimgui-dev)
+# The tests also start the GUI on a virtual display (Xvfb with Mesa's
+# software OpenGL) and look at its screenshots with ImageMagick.
+test_packages=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick)
 
 install_packages() {
   local missing=()
@@ -38,6 +42,7 @@ case "${1:-}" in
     echo "Wrote $(pwd)/render.png"
     ;;
   test)
+    packages+=("${test_packages[@]}")
     install_packages
     build
     ctest --test-dir build --output-on-failure --parallel "$(nproc)"

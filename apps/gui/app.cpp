@@ -1,0 +1,499 @@
+#include "app.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "pathlab/camera.h"
+#include "pathlab/error.h"
+#include "pathlab/progress.h"
+#include "pathlab/todo.h"
+
+namespace pathlab::gui {
+namespace {
+
+constexpr Integrator kIntegrators[] = {Integrator::Path, Integrator::Direct, Integrator::Preview, Integrator::Normals};
+constexpr const char* kIntegratorNames[] = {"path (tasks 4-6)", "direct (task 4)", "preview (tasks 1-3)",
+                                            "normals (tasks 1-2)"};
+constexpr const char* kTaskTitles[] = {"", "Camera rays", "Intersection", "BVH", "Direct lighting",
+                                       "Path tracing", "Mirror & glass", "Environment"};
+constexpr const char* kTabNames[] = {"", "1 Camera", "2 Hits", "3 BVH", "4 Direct", "5 Paths", "6 Mirror/glass",
+                                     "7 Environment"};
+constexpr const char* kTaskFiles[] = {"",
+                                      "tasks/01-camera-rays/camera_rays.cpp",
+                                      "tasks/02-intersection/intersection.cpp",
+                                      "tasks/03-bvh/bvh.cpp",
+                                      "tasks/04-direct-lighting/direct_lighting.cpp",
+                                      "tasks/05-path-tracing/path_tracing.cpp",
+                                      "tasks/06-mirror-glass/mirror_glass.cpp",
+                                      "tasks/07-environment/environment.cpp"};
+constexpr int kInspectedSamples = 16;
+const ImVec4 kWarning(1.0f, 0.45f, 0.35f, 1.0f), kGood(0.5f, 0.9f, 0.5f, 1.0f), kDim(0.65f, 0.65f, 0.65f, 1.0f);
+
+// The views of every task, made once: panels keep pointers into it.
+const std::vector<DebugView>& views() {
+  static const std::vector<DebugView> all = allDebugViews();
+  return all;
+}
+
+std::vector<const DebugView*> viewsOfTask(int task) {
+  std::vector<const DebugView*> result;
+  for (const DebugView& view : views())
+    if (view.task == task) result.push_back(&view);
+  return result;
+}
+
+std::vector<TodoReached> todosOfTask(int task) {
+  std::vector<TodoReached> result;
+  char prefix[8];
+  std::snprintf(prefix, sizeof prefix, "T%d.", task);
+  for (const TodoReached& todo : todosReached())
+    if (todo.tag.rfind(prefix, 0) == 0) result.push_back(todo);
+  return result;
+}
+
+int parseInt(const ScriptCommand& command, size_t i) {
+  try {
+    return std::stoi(command.args[i]);
+  } catch (const std::exception&) {
+    throw Error("script line " + std::to_string(command.line) + ": " + command.verb + ": \"" + command.args[i] +
+                "\" is not a whole number");
+  }
+}
+
+float parseFloat(const ScriptCommand& command, size_t i) {
+  try {
+    return std::stof(command.args[i]);
+  } catch (const std::exception&) {
+    throw Error("script line " + std::to_string(command.line) + ": " + command.verb + ": \"" + command.args[i] +
+                "\" is not a number");
+  }
+}
+
+// Where an image of `size` pixels lands when fitted into `available`
+// keeping its aspect ratio.
+float fitScale(ImVec2 available, int width, int height) {
+  return std::max(0.05f, std::min(available.x / float(width), available.y / float(height)));
+}
+
+// An image drawn as an ImGui item, and the image pixel under the mouse.
+struct ShownImage {
+  bool hovered = false;
+  Point2 mousePixel{0.0f};  // in image pixels
+};
+
+ShownImage showImage(const Texture& texture, float scale) {
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::Image(texture.imguiId(), ImVec2(float(texture.width()) * scale, float(texture.height()) * scale));
+  ShownImage shown;
+  shown.hovered = ImGui::IsItemHovered();
+  const ImVec2 mouse = ImGui::GetMousePos();
+  shown.mousePixel = Point2((mouse.x - origin.x) / scale, (mouse.y - origin.y) / scale);
+  return shown;
+}
+
+// A click is a press and release without dragging.
+bool clicked(ImGuiMouseButton button) {
+  if (!ImGui::IsMouseReleased(button)) return false;
+  const ImVec2 drag = ImGui::GetMouseDragDelta(button, 0.0f);
+  return drag.x * drag.x + drag.y * drag.y < 9.0f;
+}
+
+}  // namespace
+
+App::App(Scene scene, AppOptions options)
+    : base_(std::move(scene)),
+      options_(std::move(options)),
+      camera_(base_.camera),
+      width_(base_.render.width),
+      height_(base_.render.height),
+      spp_(base_.render.samplesPerPixel),
+      maxDepth_(base_.render.maxDepth),
+      lightSamples_(base_.render.lightSamples),
+      renderWorker_([](const RenderJob& job, const std::atomic<bool>& cancel,
+                       const std::function<void(RenderFrame)>& publish) {
+        RenderOptions renderOptions = job.options;
+        renderOptions.cancel = &cancel;
+        ProgressiveRender progressive(*job.scene, renderOptions);
+        while (progressive.step()) publish({progressive.image(), progressive.stats(), job.generation});
+        if (!cancel) publish({progressive.image(), progressive.stats(), job.generation});
+      }),
+      viewWorker_([](const ViewJob& job, const std::atomic<bool>&, const std::function<void(ViewResult)>& publish) {
+        ViewResult result;
+        result.key = job.key;
+        try {
+          DebugViewRequest request(*job.scene, job.scene->render.width, job.scene->render.height);
+          request.pixel = job.pixel;
+          request.depth = job.depth;
+          request.viewCamera = job.viewCamera;
+          request.threads = job.threads;
+          result.output = job.view->render(request);
+        } catch (const std::exception& e) {
+          result.error = e.what();
+        }
+        publish(std::move(result));
+      }) {
+  // "1:reference 2:student ..." -> which tasks run the student's code.
+  std::istringstream summary(options_.taskSummary);
+  for (std::string entry; summary >> entry;) {
+    const int task = std::atoi(entry.c_str());
+    if (task >= 1 && task <= 7) studentTask_[size_t(task)] = entry.find("student") != std::string::npos;
+  }
+  if (options_.panel >= 1 && options_.panel <= 7) requestedTab_ = options_.panel;
+  restartRender();
+  inspect(IVec2(width_ / 2, height_ / 2));  // the pixel the views inspect until one is clicked
+}
+
+// ---- Scene and render -------------------------------------------------------
+
+void App::restartRender() {
+  auto scene = std::make_shared<Scene>(base_);
+  scene->camera = camera_;
+  scene->render.width = width_;
+  scene->render.height = height_;
+  scene->render.samplesPerPixel = spp_;
+  scene->render.maxDepth = maxDepth_;
+  scene->render.lightSamples = lightSamples_;
+  scene_ = scene;
+  RenderOptions renderOptions;
+  renderOptions.integrator = kIntegrators[integrator_];
+  renderOptions.progress = false;
+  renderOptions.threads = options_.threads;
+  renderOptions.maxPassSpp = 4;  // refresh the window often
+  renderWorker_.submit({scene_, renderOptions, ++generation_});
+  renderCurrent_ = false;
+  if (pixel_ && (pixel_->x >= width_ || pixel_->y >= height_)) pixel_.reset();
+  if (pixel_) inspect(*pixel_);
+}
+
+void App::takeResults() {
+  if (std::optional<RenderFrame> frame = renderWorker_.take()) {
+    if (frame->generation == generation_) {
+      renderImage_ = std::move(frame->image);
+      renderStats_ = frame->stats;
+      renderTexture_.upload(renderImage_, exposure_);
+      renderCurrent_ = renderStats_.completedSpp >= spp_;
+    }
+  }
+  if (std::optional<ViewResult> result = viewWorker_.take()) {
+    shownKey_ = result->key;
+    viewError_ = result->error;
+    viewOutput_ = std::move(result->output);
+    if (viewError_.empty()) viewTexture_.upload(viewOutput_.image, 0.0f);
+  }
+}
+
+void App::inspect(IVec2 pixel) {
+  pixel_ = pixel;
+  const Accelerator accelerator(*scene_);
+  const Lights lights = Lights::fromScene(*scene_);
+  RenderOptions renderOptions;
+  renderOptions.integrator = kIntegrators[integrator_];
+  inspection_ = inspectPixel(*scene_, accelerator, lights, renderOptions, pixel, std::min(spp_, kInspectedSamples));
+}
+
+bool App::panelSettled() const {
+  const std::vector<const DebugView*> panelViews = viewsOfTask(selectedTab_);
+  return panelViews.empty() ||
+         (shownKey_ == viewKey(*panelViews[size_t(selectedView_[size_t(selectedTab_)])]) && viewWorker_.idle());
+}
+
+bool App::settled() const { return renderCurrent_ && renderWorker_.idle() && panelSettled(); }
+
+void App::frame() {
+  takeResults();
+  runScript();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float renderWidth = std::floor(display.x * 0.52f);
+  drawRenderWindow(renderWidth, display.y);
+  drawSidePanel(renderWidth, display.x - renderWidth, display.y);
+}
+
+void App::drawRenderWindow(float width, float height) {
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(ImVec2(width, height));
+  ImGui::Begin("Render", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  const RenderStats& stats = renderStats_;
+  ImGui::Text("%s  %dx%d  %d/%d spp  %.1f s  %s rays/s", base_.source.c_str(), width_, height_, stats.completedSpp,
+              spp_, stats.seconds, formatRate(stats.seconds > 0 ? double(stats.rays) / stats.seconds : 0.0).c_str());
+  if (stats.nonFiniteSamples > 0) {
+    ImGui::TextColored(kWarning, "%llu NaN/Inf samples (first at pixel %d,%d): left out of the image",
+                       (unsigned long long)stats.nonFiniteSamples, stats.firstNonFinitePixel->x,
+                       stats.firstNonFinitePixel->y);
+  }
+  ImGui::TextColored(kDim, "click: inspect a pixel   drag: orbit   right-drag: pan   wheel: zoom");
+  if (!renderTexture_.empty()) {
+    const ImVec2 available = ImGui::GetContentRegionAvail();
+    const float scale = fitScale(ImVec2(available.x, available.y * 0.6f), renderTexture_.width(), renderTexture_.height());
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const ShownImage shown = showImage(renderTexture_, scale);
+    if (pixel_) {  // the inspected pixel, outlined
+      ImGui::GetWindowDrawList()->AddRect(
+          ImVec2(origin.x + float(pixel_->x) * scale - 2, origin.y + float(pixel_->y) * scale - 2),
+          ImVec2(origin.x + float(pixel_->x + 1) * scale + 2, origin.y + float(pixel_->y + 1) * scale + 2),
+          IM_COL32(255, 255, 60, 255));
+    }
+    const ImGuiIO& io = ImGui::GetIO();
+    bool moved = false;
+    if (shown.hovered && clicked(ImGuiMouseButton_Left)) {
+      inspect(IVec2(std::clamp(int(shown.mousePixel.x), 0, width_ - 1), std::clamp(int(shown.mousePixel.y), 0, height_ - 1)));
+    } else if (shown.hovered && ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+      camera_ = orbitCamera(camera_, -0.3f * io.MouseDelta.x, 0.3f * io.MouseDelta.y);
+      moved = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
+    } else if (shown.hovered && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
+      camera_ = panCamera(camera_, Vec2(io.MouseDelta.x, io.MouseDelta.y) / scale, height_);
+      moved = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
+    }
+    if (shown.hovered && io.MouseWheel != 0.0f) {
+      camera_ = dollyCamera(camera_, std::pow(0.9f, io.MouseWheel));
+      moved = true;
+    }
+    if (moved) restartRender();
+  }
+  ImGui::Separator();
+  ImGui::BeginChild("inspector", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
+  drawInspector();
+  ImGui::EndChild();
+  ImGui::End();
+}
+
+// ---- Right-hand side ------------------------------------------------------------
+
+void App::drawSidePanel(float x, float width, float height) {
+  ImGui::SetNextWindowPos(ImVec2(x, 0));
+  ImGui::SetNextWindowSize(ImVec2(width, height));
+  ImGui::Begin("PathLab debugger", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  drawSettings();
+  if (ImGui::BeginTabBar("panels")) {
+    for (int tab = 1; tab <= 7; ++tab) {
+      const ImGuiTabItemFlags flags = requestedTab_ == tab ? ImGuiTabItemFlags_SetSelected : 0;
+      char label[64];
+      // ### keeps the tab's identity while its label changes.
+      std::snprintf(label, sizeof label, "%s%s###task%d", kTabNames[tab], todosOfTask(tab).empty() ? "" : " (TODO)", tab);
+      if (ImGui::BeginTabItem(label, nullptr, flags)) {
+        if (requestedTab_ < 0) selectedTab_ = tab;  // ImGui switches tabs a frame after the request
+        ImGui::BeginChild("panel", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
+        drawTaskPanel(tab);
+        ImGui::EndChild();
+        ImGui::EndTabItem();
+      }
+    }
+    ImGui::EndTabBar();
+  }
+  requestedTab_ = -1;
+  ImGui::End();
+}
+
+void App::drawSettings() {
+  if (!ImGui::CollapsingHeader("Settings", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  bool changed = false;
+  ImGui::PushItemWidth(140);
+  int size[2] = {width_, height_};
+  if (ImGui::InputInt2("resolution", size, ImGuiInputTextFlags_EnterReturnsTrue)) {
+    width_ = std::clamp(size[0], 8, 4096), height_ = std::clamp(size[1], 8, 4096);
+    changed = true;
+  }
+  ImGui::SameLine();
+  changed |= ImGui::Combo("integrator", &integrator_, kIntegratorNames, IM_ARRAYSIZE(kIntegratorNames));
+  changed |= ImGui::SliderInt("spp", &spp_, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
+  ImGui::SameLine();
+  changed |= ImGui::SliderInt("max depth (-m)", &maxDepth_, 0, 16);
+  changed |= ImGui::SliderInt("light samples (-l)", &lightSamples_, 1, 64, "%d", ImGuiSliderFlags_Logarithmic);
+  ImGui::SameLine();
+  if (ImGui::SliderFloat("exposure", &exposure_, -6.0f, 6.0f, "%+.1f stops") && !renderImage_.pixels.empty()) {
+    renderTexture_.upload(renderImage_, exposure_);  // display only: no re-render
+  }
+  int threads = options_.threads;
+  if (ImGui::SliderInt("threads (0: all)", &threads, 0, 64)) {
+    options_.threads = threads;
+    changed = true;
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("reset camera")) {
+    camera_ = base_.camera;
+    changed = true;
+  }
+  ImGui::PopItemWidth();
+  if (changed) restartRender();
+
+  // Which code runs, and what is not done yet.
+  ImGui::Text("tasks:");
+  for (int task = 1; task <= 7; ++task) {
+    ImGui::SameLine();
+    const bool undone = !todosOfTask(task).empty();
+    ImGui::TextColored(undone ? kWarning : (studentTask_[size_t(task)] ? kGood : kDim), "%d:%s%s", task,
+                       studentTask_[size_t(task)] ? "yours" : "reference", undone ? "(TODO)" : "");
+  }
+}
+
+void App::drawInspector() {
+  if (!pixel_) return;
+  ImGui::TextColored(kDim, "Inspector: the clicked pixel's first %d samples, traced again with the render's random numbers",
+                     kInspectedSamples);
+  const PixelInspection& inspection = inspection_;
+  ImGui::Text("pixel %d,%d: %zu samples, mean (%.4f, %.4f, %.4f), integrator %s", inspection.pixel.x,
+              inspection.pixel.y, inspection.samples.size(), double(inspection.mean.x), double(inspection.mean.y),
+              double(inspection.mean.z), integratorName(kIntegrators[integrator_]));
+  if (renderCurrent_ && inspection.pixel.x < renderImage_.width && inspection.pixel.y < renderImage_.height) {
+    const Color shown = renderImage_.at(inspection.pixel.x, inspection.pixel.y);
+    ImGui::TextColored(kDim, "rendered pixel (all %d spp): (%.4f, %.4f, %.4f)", spp_, double(shown.x),
+                       double(shown.y), double(shown.z));
+  }
+  if (inspection.nonFinite > 0) ImGui::TextColored(kWarning, "%d samples are NaN or Inf", inspection.nonFinite);
+  for (const InspectedSample& sample : inspection.samples) {
+    char label[160];
+    std::snprintf(label, sizeof label, "sample %u at (%.3f, %.3f): L = (%.4f, %.4f, %.4f), %zu rays%s###s%u",
+                  sample.index, double(sample.raster.x), double(sample.raster.y), double(sample.radiance.x),
+                  double(sample.radiance.y), double(sample.radiance.z), sample.rays.size(),
+                  sample.finite ? "" : "  NaN/Inf!", sample.index);
+    if (!sample.finite) ImGui::PushStyleColor(ImGuiCol_Text, kWarning);
+    const bool open = ImGui::TreeNodeEx(label, sample.index < 2 ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+    if (!sample.finite) ImGui::PopStyleColor();
+    if (!open) continue;
+    for (const std::string& line : sample.lines) {
+      const bool blocked = line.find("BLOCKED") != std::string::npos;
+      ImGui::TextColored(blocked ? kWarning : ImGui::GetStyleColorVec4(ImGuiCol_Text), "%s", line.c_str());
+    }
+    ImGui::TreePop();
+  }
+}
+
+std::string App::viewKey(const DebugView& view) const {
+  std::string key = std::to_string(view.task) + "/" + view.name + "@" + std::to_string(generation_);
+  if (view.inputs & kUsesPixel) {
+    key += " pixel " + (pixel_ ? std::to_string(pixel_->x) + "," + std::to_string(pixel_->y) : std::string("centre"));
+  }
+  if (view.inputs & kUsesDepth) key += " depth " + std::to_string(depth_);
+  if ((view.inputs & kUsesViewCamera) && viewCamera_) {
+    char camera[96];
+    std::snprintf(camera, sizeof camera, " from %.4f,%.4f,%.4f", double(viewCamera_->position.x),
+                  double(viewCamera_->position.y), double(viewCamera_->position.z));
+    key += camera;
+  }
+  return key;
+}
+
+void App::drawTaskPanel(int task) {
+  const std::vector<const DebugView*> panelViews = viewsOfTask(task);
+  ImGui::Text("Task %d: %s", task, kTaskTitles[task]);
+  ImGui::SameLine();
+  if (studentTask_[size_t(task)]) {
+    ImGui::TextColored(kGood, "your code: %s", kTaskFiles[task]);
+  } else {
+    ImGui::TextColored(kDim, "reference solution");
+  }
+  for (const TodoReached& todo : todosOfTask(task)) {
+    ImGui::TextColored(kWarning, "TODO %s not done yet: %s:%d (its result is a placeholder)", todo.tag.c_str(),
+                       todo.file.c_str(), todo.line);
+  }
+  if (panelViews.empty()) return;
+  int& selected = selectedView_[size_t(task)];
+  for (size_t i = 0; i < panelViews.size(); ++i) {
+    if (i > 0) ImGui::SameLine();
+    ImGui::RadioButton(panelViews[i]->name.c_str(), &selected, int(i));
+  }
+  const DebugView& view = *panelViews[size_t(selected)];
+  ImGui::TextColored(kDim, "%s", view.description.c_str());
+  if (view.inputs & kUsesDepth) ImGui::SliderInt("depth", &depth_, 0, int(kMaxBvhDepth));
+  if (view.inputs & kUsesViewCamera) {
+    ImGui::TextColored(kDim, "drag the picture to see it from elsewhere");
+    if (viewCamera_) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("back to the render's camera")) viewCamera_.reset();
+    }
+  }
+
+  // Recompute the view when what it reads has changed.
+  const std::string key = viewKey(view);
+  if (key != submittedKey_ && key != shownKey_) {
+    viewWorker_.submit({&view, scene_, pixel_.value_or(IVec2(-1, -1)), depth_,
+                        (view.inputs & kUsesViewCamera) ? viewCamera_ : std::nullopt, options_.threads, key});
+    submittedKey_ = key;
+  }
+  const bool current = shownKey_ == key;
+  if (!current) ImGui::TextColored(kDim, "computing...");
+  if (!viewError_.empty()) {
+    ImGui::TextColored(kWarning, "this view failed: %s", viewError_.c_str());
+    return;
+  }
+  if (viewTexture_.empty() || shownKey_.rfind(std::to_string(task) + "/" + view.name + "@", 0) != 0) return;
+
+  const ImVec2 available = ImGui::GetContentRegionAvail();
+  const float scale = fitScale(ImVec2(available.x, std::max(200.0f, available.y * 0.62f)), viewTexture_.width(),
+                               viewTexture_.height());
+  const ShownImage shown = showImage(viewTexture_, scale);
+  const ImGuiIO& io = ImGui::GetIO();
+  if (shown.hovered && (view.inputs & kUsesViewCamera) && ImGui::IsMouseDragging(ImGuiMouseButton_Left) &&
+      (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+    viewCamera_ = orbitCamera(viewCamera_.value_or(camera_), -0.3f * io.MouseDelta.x, 0.3f * io.MouseDelta.y);
+  } else if (shown.hovered && (view.inputs & kCameraImage) && !viewCamera_ && clicked(ImGuiMouseButton_Left) &&
+             shown.mousePixel.x < float(width_) && shown.mousePixel.y < float(height_)) {
+    inspect(IVec2(shown.mousePixel));
+  }
+  ImGui::TextUnformatted(viewOutput_.report.c_str());
+}
+
+// ---- Script ------------------------------------------------------------------
+
+void App::runScript() {
+  // Settled for a few frames: the window shows the finished state.
+  settledFrames_ = settled() ? settledFrames_ + 1 : 0;
+  panelSettledFrames_ = panelSettled() ? panelSettledFrames_ + 1 : 0;
+  while (scriptPosition_ < options_.script.size()) {
+    if (!runCommand(options_.script[scriptPosition_])) return;
+    ++scriptPosition_;
+    return;  // one command per frame, so the interface draws what it did
+  }
+}
+
+bool App::runCommand(const ScriptCommand& command) {
+  const std::string& verb = command.verb;
+  if (verb == "wait") return settledFrames_ >= 3;
+  if (verb == "wait-spp") return renderStats_.completedSpp >= std::min(spp_, parseInt(command, 0));
+  if (verb == "wait-panel") return panelSettledFrames_ >= 3;
+  std::printf("script: %s", verb.c_str());
+  for (const std::string& arg : command.args) std::printf(" %s", arg.c_str());
+  if (verb == "panel") {
+    const int panel = parseInt(command, 0);
+    if (panel < 1 || panel > 7) throw Error("script line " + std::to_string(command.line) + ": panel must be 1..7");
+    requestedTab_ = selectedTab_ = panel;
+  } else if (verb == "view") {
+    const std::vector<const DebugView*> panelViews = viewsOfTask(selectedTab_);
+    auto found = std::find_if(panelViews.begin(), panelViews.end(),
+                              [&](const DebugView* v) { return v->name == command.args[0]; });
+    if (found == panelViews.end()) {
+      throw Error("script line " + std::to_string(command.line) + ": panel " + std::to_string(selectedTab_) +
+                  " has no view \"" + command.args[0] + "\"");
+    }
+    selectedView_[size_t(selectedTab_)] = int(found - panelViews.begin());
+  } else if (verb == "click") {
+    const IVec2 pixel(parseInt(command, 0), parseInt(command, 1));
+    if (pixel.x < 0 || pixel.y < 0 || pixel.x >= width_ || pixel.y >= height_) {
+      throw Error("script line " + std::to_string(command.line) + ": click: pixel outside the image");
+    }
+    inspect(pixel);
+    std::printf(" -> pixel %d,%d: %zu samples, mean (%.4f, %.4f, %.4f)", pixel.x, pixel.y, inspection_.samples.size(),
+                double(inspection_.mean.x), double(inspection_.mean.y), double(inspection_.mean.z));
+  } else if (verb == "orbit") {
+    camera_ = orbitCamera(camera_, parseFloat(command, 0), parseFloat(command, 1));
+    restartRender();
+  } else if (verb == "view-orbit") {
+    viewCamera_ = orbitCamera(viewCamera_.value_or(camera_), parseFloat(command, 0), parseFloat(command, 1));
+  } else if (verb == "depth") {
+    depth_ = std::clamp(parseInt(command, 0), 0, int(kMaxBvhDepth));
+  } else if (verb == "exposure") {
+    exposure_ = parseFloat(command, 0);
+    if (!renderImage_.pixels.empty()) renderTexture_.upload(renderImage_, exposure_);
+  } else if (verb == "screenshot") {
+    screenshot_ = command.args[0];
+  } else if (verb == "quit") {
+    quit_ = true;
+  }
+  std::printf("\n");
+  std::fflush(stdout);
+  return true;
+}
+
+}  // namespace pathlab::gui

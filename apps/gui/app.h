@@ -1,0 +1,122 @@
+// The debugger window: the progressive render on the left (click a pixel to
+// inspect it, drag to orbit, right-drag to pan, wheel to zoom) with the pixel
+// inspector below it, and on the right the settings and one panel per task. A panel
+// shows its task's debugger views (tasks/NN-name/debugger.cpp), computed in
+// the background from the current scene, camera and inspected pixel.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "background_worker.h"
+#include "pathlab/debug_views.h"
+#include "pathlab/inspect.h"
+#include "pathlab/render.h"
+#include "script.h"
+#include "texture.h"
+
+namespace pathlab::gui {
+
+struct AppOptions {
+  int panel = 1;                   // open on this task's panel (1..7)
+  std::vector<ScriptCommand> script;
+  int threads = 0;                 // render threads; 0: all
+  std::string taskSummary;         // "1:reference 2:student ...", as the build configured it
+};
+
+class App {
+ public:
+  App(Scene scene, AppOptions options);
+
+  // Builds this frame's interface (between ImGui::NewFrame and ImGui::Render).
+  void frame();
+  bool quitRequested() const { return quit_; }
+  // A screenshot the script asked for in this frame: save the framebuffer
+  // after drawing it.
+  std::optional<std::string> takeScreenshotRequest() { return std::exchange(screenshot_, std::nullopt); }
+  // Whether the render and the visible panel are finished.
+  bool settled() const;
+  bool panelSettled() const;
+
+ private:
+  struct RenderJob {
+    std::shared_ptr<const Scene> scene;
+    RenderOptions options;
+    uint64_t generation;
+  };
+  struct RenderFrame {
+    Image image;
+    RenderStats stats;
+    uint64_t generation;
+  };
+  struct ViewJob {
+    const DebugView* view;
+    std::shared_ptr<const Scene> scene;
+    IVec2 pixel;
+    int depth;
+    std::optional<Camera> viewCamera;
+    int threads;
+    std::string key;
+  };
+  struct ViewResult {
+    DebugOutput output;
+    std::string error;  // a view that threw
+    std::string key;
+  };
+
+  // Scene and render
+  void restartRender();
+  void takeResults();
+  void drawRenderWindow(float width, float height);
+  void inspect(IVec2 pixel);
+  // Right-hand side
+  void drawSidePanel(float x, float width, float height);
+  void drawSettings();
+  void drawInspector();
+  void drawTaskPanel(int task);
+  std::string viewKey(const DebugView& view) const;
+  // Script
+  void runScript();
+  bool runCommand(const ScriptCommand& command);  // false: not finished, try again next frame
+
+  Scene base_;  // as loaded; the controls below override parts of it
+  AppOptions options_;
+  Camera camera_;
+  int width_, height_, spp_, maxDepth_, lightSamples_;
+  int integrator_ = 0;  // index into kIntegrators
+  float exposure_ = 0.0f;
+  std::array<bool, 8> studentTask_{};
+
+  std::shared_ptr<const Scene> scene_;  // the scene being rendered
+  uint64_t generation_ = 0;
+  BackgroundWorker<RenderJob, RenderFrame> renderWorker_;
+  Texture renderTexture_;
+  Image renderImage_;
+  RenderStats renderStats_;
+  bool renderCurrent_ = false;  // the shown frame belongs to the current generation and is final
+
+  std::optional<IVec2> pixel_;
+  PixelInspection inspection_;
+
+  int selectedTab_ = 1;        // the task whose panel is shown
+  int requestedTab_ = -1;      // a tab to select programmatically this frame
+  std::array<int, 8> selectedView_{};
+  int depth_ = 3;
+  std::optional<Camera> viewCamera_;
+  BackgroundWorker<ViewJob, ViewResult> viewWorker_;
+  std::string submittedKey_, shownKey_;
+  Texture viewTexture_;
+  DebugOutput viewOutput_;
+  std::string viewError_;
+
+  size_t scriptPosition_ = 0;
+  int settledFrames_ = 0, panelSettledFrames_ = 0;
+  bool quit_ = false;
+  std::optional<std::string> screenshot_;
+};
+
+}  // namespace pathlab::gui

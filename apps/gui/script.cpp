@@ -1,0 +1,35 @@
+#include "script.h"
+
+#include <map>
+#include <sstream>
+
+#include "pathlab/error.h"
+
+namespace pathlab::gui {
+
+std::vector<ScriptCommand> parseScript(const std::string& text, const std::string& name) {
+  static const std::map<std::string, size_t> arity = {
+      {"panel", 1},  {"view", 1},     {"click", 2},      {"orbit", 2}, {"view-orbit", 2}, {"depth", 1},
+      {"exposure", 1}, {"wait", 0},   {"wait-spp", 1}, {"wait-panel", 0},   {"screenshot", 1}, {"quit", 0}};
+  std::vector<ScriptCommand> commands;
+  std::istringstream lines(text);
+  std::string line;
+  for (int number = 1; std::getline(lines, line); ++number) {
+    std::istringstream words(line);
+    ScriptCommand command;
+    command.line = number;
+    if (!(words >> command.verb) || command.verb[0] == '#') continue;
+    for (std::string word; words >> word;) command.args.push_back(word);
+    const auto known = arity.find(command.verb);
+    const std::string where = name + ":" + std::to_string(number) + ": ";
+    if (known == arity.end()) throw Error(where + "unknown command \"" + command.verb + "\"");
+    if (command.args.size() != known->second) {
+      throw Error(where + command.verb + " takes " + std::to_string(known->second) + " argument(s), got " +
+                  std::to_string(command.args.size()));
+    }
+    commands.push_back(std::move(command));
+  }
+  return commands;
+}
+
+}  // namespace pathlab::gui

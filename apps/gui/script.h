@@ -1,0 +1,33 @@
+// Scripted sessions for tests, docs and CI: `pathlab-gui --script FILE`
+// runs one command per line as if a person did it, e.g.
+//   panel 5            show task 5's panel
+//   view paths         pick the panel's view by name
+//   click 200 150      click the render at pixel (200, 150): inspect it
+//   orbit 30 10        drag the render camera (yaw, pitch in degrees)
+//   view-orbit 40 20   drag the panel's 3D view
+//   depth 2            move the depth slider
+//   exposure -1        display exposure in stops
+//   wait               until the render and the panel are finished
+//   wait-spp 8         until the render has 8 samples per pixel
+//   wait-panel         until the panel's view is computed
+//   screenshot F.png   save the window
+//   quit
+// Blank lines and lines starting with # are skipped.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace pathlab::gui {
+
+struct ScriptCommand {
+  std::string verb;
+  std::vector<std::string> args;
+  int line = 0;
+};
+
+// Throws pathlab::Error naming the file and line for an unknown command or
+// the wrong number of arguments.
+std::vector<ScriptCommand> parseScript(const std::string& text, const std::string& name);
+
+}  // namespace pathlab::gui

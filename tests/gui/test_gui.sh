@@ -1,0 +1,117 @@
+#!/usr/bin/env bash
+# The GUI under Xvfb, as CI runs it: a scripted session (panel switches, a
+# click, an orbit of a panel's 3D view, screenshots) on the reference build,
+# every panel on the all-stubs build, and the errors a user can cause.
+#   test_gui.sh BUILD_DIR
+set -uo pipefail
+build=$1
+gui=$build/pathlab-gui
+stubs=$build/pathlab-gui-stubs
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+command -v xvfb-run > /dev/null || { echo "xvfb-run is missing: apt-get install xvfb xauth"; exit 1; }
+command -v convert > /dev/null || { echo "ImageMagick is missing: apt-get install imagemagick"; exit 1; }
+xrun() { xvfb-run -a -s "-screen 0 1600x1000x24" "$@"; }
+
+# Standard deviation of an image's grey levels, 0..1: a blank window is ~0.
+spread() { convert "$1" -colorspace Gray -format "%[fx:standard_deviation]" info:; }
+# Fraction of pixels that differ between two images of the same size.
+differ() { compare -metric AE -fuzz 2% "$1" "$2" null: 2>&1 | awk -v n="$3" '{ printf "%.4f", $1 / n }'; }
+expect() {  # expect DESCRIPTION CONDITION(awk)
+  awk "BEGIN { exit !($2) }" || fail "$1 ($2)"
+}
+
+# 1. A scripted session on the reference build.
+cat > "$out/session.txt" << 'SCRIPT'
+# panel 1, click a pixel on the left sphere, then task 5's paths seen from the side
+panel 1
+wait
+screenshot OUT/panel1.png
+click 140 200
+panel 5
+view paths
+wait-panel
+screenshot OUT/paths-front.png
+view-orbit 50 20
+wait-panel
+screenshot OUT/paths-side.png
+quit
+SCRIPT
+sed -i "s|OUT|$out|g" "$out/session.txt"
+if ! xrun "$gui" --script "$out/session.txt" --timeout 300 > "$out/session.log" 2> "$out/session.err"; then
+  fail "scripted session exited with $?"; cat "$out/session.err"
+fi
+grep -q "click 140 200 -> pixel 140,200: 16 samples" "$out/session.log" || fail "the click was not inspected"
+for f in panel1 paths-front paths-side; do
+  [[ -s $out/$f.png ]] || { fail "no screenshot $f.png"; continue; }
+  size=$(identify -format "%wx%h" "$out/$f.png")
+  [[ $size == 1500x900 ]] || fail "$f.png is $size, not the 1500x900 window"
+  s=$(spread "$out/$f.png"); expect "$f.png is not blank (grey-level spread $s)" "$s > 0.08"
+done
+pixels=$((1500 * 900))
+d=$(differ "$out/panel1.png" "$out/paths-front.png" $pixels)
+expect "switching panel 1 -> 5 changed the window ($d of the pixels)" "$d > 0.05"
+d=$(differ "$out/paths-front.png" "$out/paths-side.png" $pixels)
+expect "orbiting the 3D view redrew the panel ($d of the pixels)" "$d > 0.02"
+
+# 2. --screenshot, the documented one-liner, on another panel.
+xrun "$gui" --panel 7 --screenshot "$out/panel7.png" > /dev/null 2>&1 || fail "--panel 7 --screenshot exited with $?"
+[[ -s $out/panel7.png ]] && { s=$(spread "$out/panel7.png"); expect "panel7.png is not blank ($s)" "$s > 0.08"; }
+
+# 3. Every panel on the untouched stubs: TODOs flagged, no crash.
+cat > "$out/stubs.txt" << 'SCRIPT'
+panel 1
+wait-panel
+panel 2
+wait-panel
+panel 3
+view traversal
+wait-panel
+panel 4
+view shadow-rays
+wait-panel
+panel 5
+view paths
+wait-panel
+panel 6
+wait-panel
+panel 7
+wait-panel
+click 10 10
+wait
+screenshot OUT/stubs.png
+quit
+SCRIPT
+sed -i "s|OUT|$out|g" "$out/stubs.txt"
+if ! xrun "$stubs" --script "$out/stubs.txt" --timeout 300 > "$out/stubs.log" 2> "$out/stubs.err"; then
+  fail "the stubs session exited with $?"; tail -5 "$out/stubs.err"
+fi
+grep -q "task 1 not implemented: tasks/01-camera-rays/camera_rays.cpp" "$out/stubs.err" ||
+  fail "the stubs' TODOs were not reported"
+[[ -s $out/stubs.png ]] || fail "no screenshot of the stubs session"
+
+# 4. Mistakes get one clear line and exit 1, never a crash or a hang.
+check_error() {  # check_error EXPECTED_TEXT ARGS...
+  local expected=$1; shift
+  xrun "$gui" "$@" > /dev/null 2> "$out/err.txt"; local rc=$?
+  [[ $rc == 1 ]] || fail "pathlab-gui $* exited with $rc, expected 1"
+  grep -q "$expected" "$out/err.txt" || fail "pathlab-gui $*: expected '$expected' in: $(cat "$out/err.txt")"
+}
+check_error "no-such.json" no-such.json --screenshot "$out/x.png"
+printf 'panel 3\nfly 1 2\n' > "$out/bad.txt"
+check_error "bad.txt:2: unknown command \"fly\"" --script "$out/bad.txt"
+printf 'panel 3\nview nothing\n' > "$out/bad.txt"
+check_error "panel 3 has no view \"nothing\"" --script "$out/bad.txt"
+printf 'click 5000 1\n' > "$out/bad.txt"
+check_error "click: pixel outside the image" --script "$out/bad.txt"
+check_error "use a .png file" --screenshot "$out/x.txt"
+printf 'wait-spp 100000\n' > "$out/slow.txt"
+check_error "did not finish within 3 s" --script "$out/slow.txt" --timeout 3 -t 1
+env -u DISPLAY "$gui" --screenshot "$out/x.png" > /dev/null 2> "$out/err.txt"; rc=$?
+[[ $rc == 1 ]] && grep -q "cannot open a window" "$out/err.txt" || fail "no display: exit $rc, $(cat "$out/err.txt")"
+
+if ((failures > 0)); then echo "$failures GUI check(s) failed"; exit 1; fi
+echo "GUI: all checks passed"
