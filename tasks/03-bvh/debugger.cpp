@@ -148,7 +148,7 @@ DebugOutput traversalView(const DebugViewRequest& request) {
                   leaf.count, entry ? double(*entry) : -1.0, holdsHit ? "  <- the closest hit" : "");
     report += line;
   }
-  drawText(image, Point2(6, 6), std::to_string(leaves.size()) + " LEAVES TESTED, DARK FIRST", Color(0.95f), 2);
+  drawText(image, Point2(6, 6), "LEAVES TESTED: " + std::to_string(leaves.size()) + ", DARK FIRST", Color(0.95f), 2);
   markInspectedPixel(image, request);
   return {image, report};
 }
