@@ -17,6 +17,7 @@
 #include "pathlab/inspect.h"
 #include "pathlab/render.h"
 #include "script.h"
+#include "shell.h"
 #include "texture.h"
 
 namespace pathlab::gui {
@@ -28,16 +29,14 @@ struct AppOptions {
   std::string taskSummary;         // "1:reference 2:student ...", as the build configured it
 };
 
-class App {
+class App : public ShellClient {
  public:
   App(Scene scene, AppOptions options);
 
-  // Builds this frame's interface (between ImGui::NewFrame and ImGui::Render).
-  void frame();
-  bool quitRequested() const { return quit_; }
-  // A screenshot the script asked for in this frame: save the framebuffer
-  // after drawing it.
-  std::optional<std::string> takeScreenshotRequest() { return std::exchange(screenshot_, std::nullopt); }
+  void frame() override;
+  bool quitRequested() const override { return quit_; }
+  // A screenshot the script asked for in this frame.
+  std::optional<std::string> takeScreenshotRequest() override { return std::exchange(screenshot_, std::nullopt); }
   // Whether the render and the visible panel are finished.
   bool settled() const;
   bool panelSettled() const;
