@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config git python3 libglm-dev libopenimageio-dev doctest-dev
           nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libpugixml-dev libembree-dev
-          libglfw3-dev libimgui-dev)
+          libglfw3-dev libimgui-dev python3-matplotlib)
 # The tests also start the GUI on a virtual display (Xvfb with Mesa's
 # software OpenGL) and look at its screenshots with ImageMagick.
 test_packages=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick)

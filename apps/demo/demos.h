@@ -1,0 +1,51 @@
+// The lecture demos: each turns a few parameters into a figure and a few
+// lines of numbers. `pathlab-demo NAME` writes the figure as a PNG;
+// `pathlab-demo NAME --gui` redraws it live as the sliders move.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "figure.h"
+
+namespace pathlab::demo {
+
+struct Parameter {
+  std::string name;
+  double value, min, max;
+  bool integer = false;
+  bool logarithmic = false;  // slider spacing
+  std::string help;
+};
+
+using Values = std::map<std::string, double>;
+
+struct DemoResult {
+  Figure figure;
+  std::string numbers;  // what the figure shows, in numbers, one fact per line
+};
+
+struct Demo {
+  std::string name;
+  std::string summary;  // one line for --list
+  std::vector<Parameter> parameters;
+  std::function<DemoResult(const Values&)> run;
+};
+
+// Every demo, in lecture order.
+const std::vector<Demo>& allDemos();
+
+// The demos' own numerics, exposed for tests.
+// The example density of demo 1 on [0, 2] and its CDF.
+double examplePdf(double x);
+double exampleCdf(double x);
+// Solves exampleCdf(x) = u for x in [0, 2]: Newton's method from the
+// middle, falling back to bisection whenever a step leaves the bracket.
+// `iterations` (if given) receives the number of steps taken.
+double invertExampleCdf(double u, int* iterations = nullptr, bool* usedBisection = nullptr);
+// The first index i with cdf[i] > u (cdf ascending, cdf.back() == 1).
+size_t sampleDiscrete(const std::vector<double>& cdf, double u);
+
+}  // namespace pathlab::demo
