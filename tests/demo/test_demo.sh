@@ -2,9 +2,12 @@
 # pathlab-demo as a lecturer runs it: --list, every demo writes its PNG in
 # under 20 s and prints numbers that agree with the theory, the -o forms,
 # bad input, and the live window under Xvfb.
-#   test_demo.sh BUILD_DIR
+#   test_demo.sh BUILD_DIR TASK7_VARIANT
+# env-importance runs task 7's code: its numbers are checked only when the
+# build links the reference (in a student release it shows the student's).
 set -uo pipefail
 demo=$1/pathlab-demo
+task7=${2:-reference}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 failures=0
@@ -52,9 +55,11 @@ light=$(grep "light (area)" "$t" | grep -oE "mean [0-9.]+" | awk '{print $2}')
 expect "rendering-equation: light sampling agrees with the exact value ($light vs $exact)" "$light / $exact > 0.98 && $light / $exact < 1.02"
 expect "rendering-equation: light sampling beats uniform by > 100x" "$(grep -oE 'needs [0-9.e+]+x' "$t" | awk '{print $2}' | tr -d x) > 100"
 t=$out/env-importance.txt
+if [[ $task7 == reference ]]; then
 grep -q "hold [0-9.]*% of the PMF and received [0-9.]*% of the samples" "$t" || fail "env-importance: no share line"
 pmf=$(grep -oE "hold [0-9.]+" "$t" | awk '{print $2}'); got=$(grep -oE "received [0-9.]+" "$t" | awk '{print $2}')
 expect "env-importance: samples follow the PMF ($got% vs $pmf%)" "$got - $pmf < 5 && $pmf - $got < 5"
+fi
 
 # -o forms: a file, a prefix.
 "$demo" pi -o "$out/custom.png" > /dev/null && [[ -s $out/custom.png ]] || fail "-o FILE.png"
