@@ -53,24 +53,6 @@ std::vector<TodoReached> todosOfTask(int task) {
   return result;
 }
 
-int parseInt(const ScriptCommand& command, size_t i) {
-  try {
-    return std::stoi(command.args[i]);
-  } catch (const std::exception&) {
-    throw Error("script line " + std::to_string(command.line) + ": " + command.verb + ": \"" + command.args[i] +
-                "\" is not a whole number");
-  }
-}
-
-float parseFloat(const ScriptCommand& command, size_t i) {
-  try {
-    return std::stof(command.args[i]);
-  } catch (const std::exception&) {
-    throw Error("script line " + std::to_string(command.line) + ": " + command.verb + ": \"" + command.args[i] +
-                "\" is not a number");
-  }
-}
-
 // Where an image of `size` pixels lands when fitted into `available`
 // keeping its aspect ratio.
 float fitScale(ImVec2 available, int width, int height) {
@@ -451,12 +433,12 @@ void App::runScript() {
 bool App::runCommand(const ScriptCommand& command) {
   const std::string& verb = command.verb;
   if (verb == "wait") return settledFrames_ >= 3;
-  if (verb == "wait-spp") return renderStats_.completedSpp >= std::min(spp_, parseInt(command, 0));
+  if (verb == "wait-spp") return renderStats_.completedSpp >= std::min(spp_, int(command.number(0)));
   if (verb == "wait-panel") return panelSettledFrames_ >= 3;
   std::printf("script: %s", verb.c_str());
   for (const std::string& arg : command.args) std::printf(" %s", arg.c_str());
   if (verb == "panel") {
-    const int panel = parseInt(command, 0);
+    const int panel = int(command.number(0));
     if (panel < 1 || panel > 7) throw Error("script line " + std::to_string(command.line) + ": panel must be 1..7");
     requestedTab_ = selectedTab_ = panel;
   } else if (verb == "view") {
@@ -469,7 +451,7 @@ bool App::runCommand(const ScriptCommand& command) {
     }
     selectedView_[size_t(selectedTab_)] = int(found - panelViews.begin());
   } else if (verb == "click") {
-    const IVec2 pixel(parseInt(command, 0), parseInt(command, 1));
+    const IVec2 pixel(int(command.number(0)), int(command.number(1)));
     if (pixel.x < 0 || pixel.y < 0 || pixel.x >= width_ || pixel.y >= height_) {
       throw Error("script line " + std::to_string(command.line) + ": click: pixel outside the image");
     }
@@ -477,14 +459,14 @@ bool App::runCommand(const ScriptCommand& command) {
     std::printf(" -> pixel %d,%d: %zu samples, mean (%.4f, %.4f, %.4f)", pixel.x, pixel.y, inspection_.samples.size(),
                 double(inspection_.mean.x), double(inspection_.mean.y), double(inspection_.mean.z));
   } else if (verb == "orbit") {
-    camera_ = orbitCamera(camera_, parseFloat(command, 0), parseFloat(command, 1));
+    camera_ = orbitCamera(camera_, float(command.number(0)), float(command.number(1)));
     restartRender();
   } else if (verb == "view-orbit") {
-    viewCamera_ = orbitCamera(viewCamera_.value_or(camera_), parseFloat(command, 0), parseFloat(command, 1));
+    viewCamera_ = orbitCamera(viewCamera_.value_or(camera_), float(command.number(0)), float(command.number(1)));
   } else if (verb == "depth") {
-    depth_ = std::clamp(parseInt(command, 0), 0, int(kMaxBvhDepth));
+    depth_ = std::clamp(int(command.number(0)), 0, int(kMaxBvhDepth));
   } else if (verb == "exposure") {
-    exposure_ = parseFloat(command, 0);
+    exposure_ = float(command.number(0));
     if (!renderImage_.pixels.empty()) renderTexture_.upload(renderImage_, exposure_);
   } else if (verb == "screenshot") {
     screenshot_ = command.args[0];

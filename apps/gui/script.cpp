@@ -27,6 +27,16 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
       throw Error(where + command.verb + " takes " + std::to_string(known->second) + " argument(s), got " +
                   std::to_string(command.args.size()));
     }
+    const bool textArgument = command.verb == "view" || command.verb == "screenshot";
+    for (const std::string& arg : command.args) {
+      size_t used = 0;
+      try {
+        (void)std::stod(arg, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (!textArgument && used != arg.size()) throw Error(where + command.verb + ": \"" + arg + "\" is not a number");
+    }
     commands.push_back(std::move(command));
   }
   return commands;

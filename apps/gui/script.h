@@ -24,10 +24,13 @@ struct ScriptCommand {
   std::string verb;
   std::vector<std::string> args;
   int line = 0;
+
+  // Argument i as a number (parseScript has checked that it is one).
+  double number(size_t i) const { return std::stod(args[i]); }
 };
 
-// Throws pathlab::Error naming the file and line for an unknown command or
-// the wrong number of arguments.
+// Throws pathlab::Error naming the file and line for an unknown command,
+// the wrong number of arguments, or a number that is not one.
 std::vector<ScriptCommand> parseScript(const std::string& text, const std::string& name);
 
 }  // namespace pathlab::gui
