@@ -41,10 +41,10 @@ const std::vector<Demo>& allDemos();
 // The example density of demo 1 on [0, 2] and its CDF.
 double examplePdf(double x);
 double exampleCdf(double x);
-// Solves exampleCdf(x) = u for x in [0, 2]: Newton's method from the
-// middle, falling back to bisection whenever a step leaves the bracket.
-// `iterations` (if given) receives the number of steps taken.
-double invertExampleCdf(double u, int* iterations = nullptr, bool* usedBisection = nullptr);
+// Solves exampleCdf(x) = u for x in [0, 2]: Newton's method from `start`
+// (default 2u: F is nearly linear), falling back to bisection whenever a
+// step leaves the bracket. `iterations` receives the number of steps taken.
+double invertExampleCdf(double u, int* iterations = nullptr, bool* usedBisection = nullptr, double start = -1.0);
 // The first index i with cdf[i] > u (cdf ascending, cdf.back() == 1).
 size_t sampleDiscrete(const std::vector<double>& cdf, double u);
 

@@ -16,8 +16,8 @@ double examplePdf(double x) { return 0.6 * std::pow(x - 1.0, 3) - 0.3 * x * x - 
 
 double exampleCdf(double x) { return 3.0 / 20.0 * std::pow(x, 4) - 0.7 * x * x * x + 17.0 / 20.0 * x * x + 0.4 * x; }
 
-double invertExampleCdf(double u, int* iterations, bool* usedBisection) {
-  double lo = 0.0, hi = 2.0, x = 2.0 * u;  // F is close to linear: a good first guess
+double invertExampleCdf(double u, int* iterations, bool* usedBisection, double start) {
+  double lo = 0.0, hi = 2.0, x = start >= 0.0 ? start : 2.0 * u;  // F is close to linear: 2u is a good first guess
   bool bisected = false;
   int step = 0;
   for (; step < 100; ++step) {

@@ -20,6 +20,13 @@ TEST_CASE("demos: F inverts exactly, Newton with bisection fallback, for u acros
     CHECK(std::abs(exampleCdf(x) - u) < 1e-12);
     CHECK(iterations < 60);
   }
+  // From a poor start Newton overshoots the bracket; bisection takes over.
+  bool bisected = false;
+  const double fromZero = invertExampleCdf(0.999, nullptr, &bisected, 0.0);
+  CHECK(bisected);
+  CHECK(std::abs(exampleCdf(fromZero) - 0.999) < 1e-12);
+  invertExampleCdf(0.999, nullptr, &bisected);
+  CHECK_FALSE(bisected);
   // f is F's derivative (central differences) and positive on [0, 2].
   for (double x = 0.05; x < 2.0; x += 0.05) {
     CHECK((exampleCdf(x + 1e-6) - exampleCdf(x - 1e-6)) / 2e-6 == doctest::Approx(examplePdf(x)).epsilon(1e-6));
