@@ -4,8 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 
 #include "pathlab/error.h"
 
@@ -19,6 +24,43 @@ std::string lowerExtension(const std::string& path) {
 }
 
 bool isFloatFormat(const std::string& ext) { return ext == ".exr" || ext == ".hdr"; }
+
+// OpenImageIO's error text can span lines (the PNG reader adds its own
+// line, found by fuzzing); a bad input must give exactly one line.
+std::string oneLine(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  for (size_t i = text.find('\n'); i != std::string::npos; i = text.find('\n', i)) text.replace(i, 1, "; ");
+  return text;
+}
+
+// libpng also prints its own "libpng error: ..." line straight to stderr for
+// a corrupt PNG (found by fuzzing). stderr points at /dev/null while
+// OpenImageIO reads; reads are serialised because fd 2 is process-wide.
+class QuietStderr {
+ public:
+  QuietStderr() : lock_(mutex()) {
+    std::fflush(stderr);
+    saved_ = ::dup(2);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (saved_ >= 0 && null >= 0) ::dup2(null, 2);
+    if (null >= 0) ::close(null);
+  }
+  ~QuietStderr() {
+    if (saved_ < 0) return;
+    ::dup2(saved_, 2);
+    ::close(saved_);
+  }
+  QuietStderr(const QuietStderr&) = delete;
+  QuietStderr& operator=(const QuietStderr&) = delete;
+
+ private:
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  std::lock_guard<std::mutex> lock_;
+  int saved_ = -1;
+};
 
 }  // namespace
 
@@ -90,29 +132,40 @@ void writeImage(const Image& image, const std::string& finalPath, const ImageMet
 
 Image readImage(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) throw Error(path + ": no such image file");
+  // OpenImageIO's own limits on what a header may claim: a truncated EXR
+  // claiming a huge image made OpenEXR allocate 1.8 GB before failing
+  // (found by fuzzing). 1 GB covers an 8192 x 4096 map of 4 float channels.
+  static std::once_flag limitsSet;
+  std::call_once(limitsSet, [] {
+    OIIO::attribute("limits:channels", 16);
+    OIIO::attribute("limits:imagesize_MB", 1024);
+    OIIO::attribute("openexr:core", 1);
+  });
+  const QuietStderr quiet;  // until the function returns or throws (the message is printed later)
   auto in = OIIO::ImageInput::open(path);
-  if (!in) throw Error(path + ": cannot read image: " + OIIO::geterror());
+  if (!in) throw Error(path + ": cannot read image: " + oneLine(OIIO::geterror()));
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
     throw Error(path + ": image has no pixels");
   }
-  if (int64_t(spec.width) * spec.height > (int64_t(1) << 28)) {
+  // At most 2^25 pixels (8192 x 4096): the image is allocated from the
+  // header before any pixel is read, so a truncated file claiming a huge
+  // size must not cost more than that (400 MB; fuzzing found a 1.8 GB case).
+  if (int64_t(spec.width) * spec.height > (int64_t(1) << 25)) {
     throw Error(path + ": image is too large (" + std::to_string(spec.width) + "x" +
-                std::to_string(spec.height) + ")");
+                std::to_string(spec.height) + ", at most 33.5 million pixels)");
   }
-  const int channels = spec.nchannels;
-  std::vector<float> data(size_t(spec.width) * size_t(spec.height) * size_t(channels));
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data())) {
-    throw Error(path + ": cannot read image: " + in->geterror());
+  // Read straight into the image: RGB, or one grey channel copied to all three.
+  const int channels = spec.nchannels >= 3 ? 3 : 1;
+  Image image(spec.width, spec.height);
+  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, image.pixels.data(), sizeof(Color))) {
+    throw Error(path + ": cannot read image: " + oneLine(in->geterror()));
   }
   const bool decodeSrgb = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
                           spec.format.basetype == OIIO::TypeDesc::UINT16;
-  Image image(spec.width, spec.height);
-  for (size_t i = 0; i < image.pixels.size(); ++i) {
-    for (int c = 0; c < 3; ++c) {
-      float v = data[i * size_t(channels) + size_t(std::min(c, channels - 1))];
-      image.pixels[i][c] = decodeSrgb ? srgbToLinear(v) : v;
-    }
+  for (Color& pixel : image.pixels) {
+    if (channels == 1) pixel = Color(pixel.x);
+    if (decodeSrgb) pixel = Color(srgbToLinear(pixel.x), srgbToLinear(pixel.y), srgbToLinear(pixel.z));
   }
   return image;
 }

@@ -42,6 +42,17 @@ wait $pid
 rc=$?
 [[ $rc -eq 130 && -s $work/partial.exr ]] && grep -q "interrupted" "$work/partial.err" \
   && pass || fail "SIGINT: exit $rc, $(cat "$work/partial.err")"
+# SIGTERM too; the file carries the samples per pixel reached, and the
+# temporary file it was written through is gone (written, then renamed).
+"$pathlab" -s 1000000 -d 160x120 -o "$work/terminated.exr" >/dev/null 2>"$work/terminated.err" &
+pid=$!
+sleep 1
+kill -TERM $pid
+wait $pid
+rc=$?
+[[ $rc -eq 130 && -s $work/terminated.exr ]] && grep -aq "pathlab:spp" "$work/terminated.exr" \
+  && grep -aq "pathlab:spp" "$work/partial.exr" && pass || fail "SIGTERM: exit $rc, $(cat "$work/terminated.err")"
+ls -a "$work" | grep -q '^\..*\.partial\.' && fail "a temporary .partial file was left behind: $(ls -a "$work")" || pass
 
 # --- debugger views --------------------------------------------------------
 views=$("$pathlab" debug --list | awk '{print $2 " " $4}')

@@ -1,0 +1,13 @@
+// The COLLADA importer on arbitrary XML (seed corpus: ../shared/course-scenes, tests/inputs).
+#include "fuzz_support.h"
+#include "pathlab/error.h"
+#include "pathlab/scene_io.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string path = pathlab::fuzz::writeInput(data, size, "scene.dae");
+  try {
+    pathlab::loadColladaScene(path);
+  } catch (const pathlab::Error&) {
+  }
+  return 0;
+}

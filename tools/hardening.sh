@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# The hardening jobs CI runs after the test suite (docs/reliability.md):
+#   1. ASan + UBSan: every test except the grader's own rebuilds and the
+#      validity matrix (same code as the suites, 65 more builds).
+#   2. TSan: the multithreaded render loop (framework tests), the CLI and
+#      the GUI's background workers.
+#   3. libFuzzer: each of the four targets for RUNS executions (default 2000).
+# Installs clang and its sanitizer runtime if missing (Debian packages).
+#   tools/hardening.sh [RUNS]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+runs=${1:-2000}
+packages=(clang libclang-rt-14-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} > 0)); then
+  sudo=(); [[ $(id -u) -ne 0 ]] && sudo=(sudo)
+  "${sudo[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+step() { echo; echo "== $* ($(date +%T))"; }
+step "ASan + UBSan build"
+cmake --preset asan > /dev/null
+cmake --build --preset asan > build-asan/build.log 2>&1 || { tail -30 build-asan/build.log; exit 1; }
+step "ASan + UBSan tests"
+ctest --preset asan --parallel "$(nproc)"
+step "TSan build"
+cmake --preset tsan > /dev/null
+cmake --build --preset tsan > build-tsan/build.log 2>&1 || { tail -30 build-tsan/build.log; exit 1; }
+step "TSan tests"
+ctest --preset tsan --parallel "$(nproc)"
+step "fuzzing, $runs executions per target"
+tools/fuzz "$runs"
+step "hardening jobs passed"
