@@ -33,25 +33,22 @@ err=$("$stubs" -q -s 1 -d 32x24 -o "$work/stubs.png" 2>&1 >/dev/null)
   && pass || fail "all-stubs render: $err"
 "$stubs" debug --task 2 --view normals -d 32x24 -o "$work/stub-normals.png" >/dev/null 2>&1 && pass || fail "all-stubs debug view"
 
-# Ctrl-C writes the image rendered so far and exits 130.
-"$pathlab" -s 1000000 -d 160x120 -o "$work/partial.exr" >/dev/null 2>"$work/partial.err" &
-pid=$!
-sleep 1
-kill -INT $pid
-wait $pid
-rc=$?
-[[ $rc -eq 130 && -s $work/partial.exr ]] && grep -q "interrupted" "$work/partial.err" \
-  && pass || fail "SIGINT: exit $rc, $(cat "$work/partial.err")"
-# SIGTERM too; the file carries the samples per pixel reached, and the
-# temporary file it was written through is gone (written, then renamed).
-"$pathlab" -s 1000000 -d 160x120 -o "$work/terminated.exr" >/dev/null 2>"$work/terminated.err" &
-pid=$!
-sleep 1
-kill -TERM $pid
-wait $pid
-rc=$?
-[[ $rc -eq 130 && -s $work/terminated.exr ]] && grep -aq "pathlab:spp" "$work/terminated.exr" \
-  && grep -aq "pathlab:spp" "$work/partial.exr" && pass || fail "SIGTERM: exit $rc, $(cat "$work/terminated.err")"
+# Ctrl-C (SIGINT) and SIGTERM write the image rendered so far and exit 130;
+# the file carries the samples per pixel reached, and the temporary file it
+# was written through is gone (written, then renamed).
+interrupt() {  # interrupt SIGNAL NAME: a long render to NAME.exr, stopped after a second
+  "$pathlab" -s 1000000 -d 160x120 -o "$work/$2.exr" >/dev/null 2>"$work/$2.err" &
+  local pid=$!
+  sleep 1
+  kill -"$1" $pid
+  wait $pid
+}
+for signal in INT TERM; do
+  interrupt $signal "stopped-$signal"
+  rc=$?
+  [[ $rc -eq 130 && -s $work/stopped-$signal.exr ]] && grep -q "interrupted" "$work/stopped-$signal.err" &&
+    grep -aq "pathlab:spp" "$work/stopped-$signal.exr" && pass || fail "SIG$signal: exit $rc, $(cat "$work/stopped-$signal.err")"
+done
 ls -a "$work" | grep -q '^\..*\.partial\.' && fail "a temporary .partial file was left behind: $(ls -a "$work")" || pass
 
 # --- debugger views --------------------------------------------------------
