@@ -75,11 +75,11 @@ void FigureView::draw(const Figure& figure) {
   nextTexture_ = 0;
   for (size_t i = 0; i < figure.plots.size(); ++i) {
     if (i > 0) ImGui::SameLine(0.0f, spacing);
-    drawPlot(figure.plots[i], i, width, height);
+    drawPlot(figure.plots[i], width, height);
   }
 }
 
-void FigureView::drawPlot(const Plot& plot, size_t, float width, float height) {
+void FigureView::drawPlot(const Plot& plot, float width, float height) {
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::Dummy(ImVec2(width, height));
   ImDrawList* list = ImGui::GetWindowDrawList();

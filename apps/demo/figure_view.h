@@ -19,7 +19,7 @@ class FigureView {
   void invalidate() { textures_.clear(); }
 
  private:
-  void drawPlot(const Plot& plot, size_t plotIndex, float width, float height);
+  void drawPlot(const Plot& plot, float width, float height);
   std::vector<std::unique_ptr<gui::Texture>> textures_;  // one per image series, in order
   size_t nextTexture_ = 0;
 };

@@ -146,7 +146,7 @@ void App::restartRender() {
   renderWorker_.submit({scene_, renderOptions, ++generation_});
   renderCurrent_ = false;
   if (pixel_ && (pixel_->x >= width_ || pixel_->y >= height_)) pixel_.reset();
-  if (pixel_) inspect(*pixel_);
+  inspectionStale_ = pixel_.has_value();  // re-traced in frame(), once no drag is under way
 }
 
 void App::takeResults() {
@@ -168,6 +168,7 @@ void App::takeResults() {
 
 void App::inspect(IVec2 pixel) {
   pixel_ = pixel;
+  inspectionStale_ = false;
   const Accelerator accelerator(*scene_);
   const Lights lights = Lights::fromScene(*scene_);
   RenderOptions renderOptions;
@@ -185,6 +186,11 @@ bool App::settled() const { return renderCurrent_ && renderWorker_.idle() && pan
 
 void App::frame() {
   takeResults();
+  // Re-inspect after the camera or settings changed, but not on every frame
+  // of a drag: each inspection builds its own BVH.
+  if (inspectionStale_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left) && !ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
+    inspect(*pixel_);
+  }
   runScript();
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float renderWidth = std::floor(display.x * 0.52f);

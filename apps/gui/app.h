@@ -100,6 +100,7 @@ class App : public ShellClient {
 
   std::optional<IVec2> pixel_;
   PixelInspection inspection_;
+  bool inspectionStale_ = false;  // the scene changed since inspection_ was traced
 
   int selectedTab_ = 1;        // the task whose panel is shown
   int requestedTab_ = -1;      // a tab to select programmatically this frame
