@@ -36,9 +36,13 @@ std::string oneLine(std::string text) {
 // libpng also prints its own "libpng error: ..." line straight to stderr for
 // a corrupt PNG (found by fuzzing). stderr points at /dev/null while
 // OpenImageIO reads; reads are serialised because fd 2 is process-wide.
+// Fuzz builds keep stderr, so a crash report from inside a read is seen.
 class QuietStderr {
  public:
   QuietStderr() : lock_(mutex()) {
+#ifdef PATHLAB_KEEP_STDERR_DURING_READS
+    return;
+#endif
     std::fflush(stderr);
     saved_ = ::dup(2);
     const int null = ::open("/dev/null", O_WRONLY);
@@ -142,8 +146,17 @@ Image readImage(const std::string& path) {
     OIIO::attribute("openexr:core", 1);
   });
   const QuietStderr quiet;  // until the function returns or throws (the message is printed later)
-  auto in = OIIO::ImageInput::open(path);
+  // Only the reader the extension names: given a whole file name,
+  // OpenImageIO tries every reader it has (TIFF, GIF, RAW, video, ...) on a
+  // file its extension's reader rejects, which lets any input reach them all.
+  std::string format = std::filesystem::path(path).extension().string();
+  if (!format.empty()) format.erase(0, 1);
+  auto in = OIIO::ImageInput::create(format.empty() ? path : format);
   if (!in) throw Error(path + ": cannot read image: " + oneLine(OIIO::geterror()));
+  OIIO::ImageSpec openedSpec;
+  if (!in->open(path, openedSpec)) {
+    throw Error(path + ": cannot read image as a ." + format + " file: " + oneLine(in->geterror()));
+  }
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
     throw Error(path + ": image has no pixels");
