@@ -169,11 +169,14 @@ void App::takeResults() {
 void App::inspect(IVec2 pixel) {
   pixel_ = pixel;
   inspectionStale_ = false;
-  const Accelerator accelerator(*scene_);
-  const Lights lights = Lights::fromScene(*scene_);
+  if (!inspectionAccelerator_) {
+    inspectionAccelerator_ = std::make_unique<const Accelerator>(base_);
+    inspectionLights_ = std::make_unique<const Lights>(Lights::fromScene(base_));
+  }
   RenderOptions renderOptions;
   renderOptions.integrator = kIntegrators[integrator_];
-  inspection_ = inspectPixel(*scene_, accelerator, lights, renderOptions, pixel, std::min(spp_, kInspectedSamples));
+  inspection_ = inspectPixel(*scene_, *inspectionAccelerator_, *inspectionLights_, renderOptions, pixel,
+                             std::min(spp_, kInspectedSamples));
 }
 
 bool App::panelSettled() const {
@@ -187,7 +190,7 @@ bool App::settled() const { return renderCurrent_ && renderWorker_.idle() && pan
 void App::frame() {
   takeResults();
   // Re-inspect after the camera or settings changed, but not on every frame
-  // of a drag: each inspection builds its own BVH.
+  // of a drag: the list would flicker, and 16 re-traced paths cost a few ms.
   if (inspectionStale_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left) && !ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
     inspect(*pixel_);
   }

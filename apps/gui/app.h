@@ -100,6 +100,10 @@ class App : public ShellClient {
 
   std::optional<IVec2> pixel_;
   PixelInspection inspection_;
+  // Built from base_ at the first inspection and kept: the controls change
+  // the camera and settings, never the geometry or the lights.
+  std::unique_ptr<const Accelerator> inspectionAccelerator_;
+  std::unique_ptr<const Lights> inspectionLights_;
   bool inspectionStale_ = false;  // the scene changed since inspection_ was traced
 
   int selectedTab_ = 1;        // the task whose panel is shown
