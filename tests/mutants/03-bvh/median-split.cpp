@@ -6,7 +6,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <numeric>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace pathlab {
 namespace {
@@ -179,6 +184,66 @@ struct RayBoxTest {
   }
 };
 
+// Both children of a node at once (siblings are adjacent in the node
+// array): the same slab arithmetic as RayBoxTest, four lanes wide. Lanes
+// hold (left min, right min, left max, right max) of one axis; far values
+// are negated so one max() narrows both ends of both intervals.
+#if defined(__SSE2__)
+class SiblingBoxTest {
+ public:
+  SiblingBoxTest(const Ray& ray, const Vec3& inverse) {
+    for (int axis = 0; axis < 3; ++axis) {
+      origin_[axis] = _mm_set1_ps(ray.origin[axis]);
+      inverse_[axis] = _mm_set1_ps(inverse[axis]);
+    }
+  }
+
+  // Entry t of children[0] and children[1], +inf for a miss.
+  void entries(const BvhNode* children, float tMin, float tMax, float& tFirst, float& tSecond) const {
+    static_assert(offsetof(BvhNode, bounds) == 0 && sizeof(Aabb) == 24);
+    const float* first = &children[0].bounds.min.x;   // min x y z, max x y z
+    const float* second = &children[1].bounds.min.x;
+    const __m128 a0 = _mm_loadu_ps(first), a1 = _mm_loadu_ps(second);          // (min x, y, z, max x)
+    const __m128 b0 = _mm_loadu_ps(first + 2), b1 = _mm_loadu_ps(second + 2);  // (min z, max x, y, z)
+    const __m128 lowXY = _mm_unpacklo_ps(a0, a1), highZX = _mm_unpackhi_ps(a0, a1), maxYZ = _mm_unpackhi_ps(b0, b1);
+    const __m128 slabs[3] = {_mm_shuffle_ps(lowXY, highZX, _MM_SHUFFLE(3, 2, 1, 0)),
+                             _mm_shuffle_ps(lowXY, maxYZ, _MM_SHUFFLE(1, 0, 3, 2)),
+                             _mm_shuffle_ps(highZX, maxYZ, _MM_SHUFFLE(3, 2, 1, 0))};
+    const __m128 scale = _mm_setr_ps(1.0f, 1.0f, -kWidenExit, -kWidenExit);
+    __m128 limits = _mm_setr_ps(tMin, tMin, -tMax, -tMax);  // (near, near, -far, -far)
+    for (int axis = 0; axis < 3; ++axis) {
+      const __m128 t = _mm_mul_ps(_mm_sub_ps(slabs[axis], origin_[axis]), inverse_[axis]);
+      const __m128 swapped = _mm_shuffle_ps(t, t, _MM_SHUFFLE(1, 0, 3, 2));
+      __m128 nearFar = _mm_shuffle_ps(_mm_min_ps(t, swapped), _mm_max_ps(t, swapped), _MM_SHUFFLE(3, 2, 1, 0));
+      // A ray in a slab plane gives 0 * inf = NaN: that axis sets no limit.
+      // All-ones bits are a NaN, and max() returns its second operand when
+      // the first is NaN, so the running limits pass through unchanged.
+      nearFar = _mm_or_ps(nearFar, _mm_cmpunord_ps(t, swapped));
+      limits = _mm_max_ps(_mm_mul_ps(nearFar, scale), limits);
+    }
+    alignas(16) float out[4];
+    _mm_store_ps(out, limits);
+    tFirst = out[0] <= -out[2] ? out[0] : kInfinity;
+    tSecond = out[1] <= -out[3] ? out[1] : kInfinity;
+  }
+
+ private:
+  __m128 origin_[3], inverse_[3];
+};
+#else
+class SiblingBoxTest {  // no SSE2: the scalar test twice
+ public:
+  SiblingBoxTest(const Ray& ray, const Vec3& inverse) : test_(ray, inverse) {}
+  void entries(const BvhNode* children, float tMin, float tMax, float& tFirst, float& tSecond) const {
+    tFirst = test_.entry(children[0].bounds, tMin, tMax);
+    tSecond = test_.entry(children[1].bounds, tMin, tMax);
+  }
+
+ private:
+  RayBoxTest test_;
+};
+#endif
+
 }  // namespace
 
 std::optional<float> intersectBox(const Aabb& box, const Ray& ray, const Vec3& inverseDirection, Interval range) {
@@ -196,9 +261,12 @@ Bvh buildBvh(std::span<const Aabb> primitiveBounds) {
 std::optional<PrimitiveHit> intersectClosest(const Bvh& bvh, const LeafGeometry& geometry, const Ray& ray,
                                              Interval range, TraversalStats* stats) {
   if (bvh.nodes.empty()) return std::nullopt;
-  const RayBoxTest boxTest(ray, 1.0f / ray.direction);
+  const Vec3 inverseDirection = 1.0f / ray.direction;
   if (stats) ++stats->boxTests;
-  if (boxTest.entry(bvh.nodes[0].bounds, range.min, range.max) == kInfinity) return std::nullopt;
+  if (RayBoxTest(ray, inverseDirection).entry(bvh.nodes[0].bounds, range.min, range.max) == kInfinity) {
+    return std::nullopt;
+  }
+  const SiblingBoxTest childTest(ray, inverseDirection);
 
   struct Pending {
     uint32_t node;
@@ -222,8 +290,8 @@ std::optional<PrimitiveHit> intersectClosest(const Bvh& bvh, const LeafGeometry&
     } else {
       // Test both children; go to the nearer, keep the farther for later.
       uint32_t near = node.leftOrFirst, far = near + 1;
-      float tNear = boxTest.entry(bvh.nodes[near].bounds, range.min, range.max);
-      float tFar = boxTest.entry(bvh.nodes[far].bounds, range.min, range.max);
+      float tNear, tFar;
+      childTest.entries(&bvh.nodes[near], range.min, range.max, tNear, tFar);
       if (stats) stats->boxTests += 2;
       if (tFar < tNear) std::swap(near, far), std::swap(tNear, tFar);
       if (tNear != kInfinity) {
@@ -247,9 +315,10 @@ std::optional<PrimitiveHit> intersectClosest(const Bvh& bvh, const LeafGeometry&
 bool intersectAny(const Bvh& bvh, const LeafGeometry& geometry, const Ray& ray, Interval range,
                   TraversalStats* stats) {
   if (bvh.nodes.empty()) return false;
-  const RayBoxTest boxTest(ray, 1.0f / ray.direction);
+  const Vec3 inverseDirection = 1.0f / ray.direction;
   if (stats) ++stats->boxTests;
-  if (boxTest.entry(bvh.nodes[0].bounds, range.min, range.max) == kInfinity) return false;
+  if (RayBoxTest(ray, inverseDirection).entry(bvh.nodes[0].bounds, range.min, range.max) == kInfinity) return false;
+  const SiblingBoxTest childTest(ray, inverseDirection);
   // The closest-hit loop without ordering or culling: any hit ends it.
   std::array<uint32_t, kMaxBvhDepth> stack;
   int size = 0;
@@ -264,8 +333,9 @@ bool intersectAny(const Bvh& bvh, const LeafGeometry& geometry, const Ray& ray, 
       }
     } else {
       const uint32_t left = node.leftOrFirst;
-      const bool hitLeft = boxTest.entry(bvh.nodes[left].bounds, range.min, range.max) != kInfinity;
-      const bool hitRight = boxTest.entry(bvh.nodes[left + 1].bounds, range.min, range.max) != kInfinity;
+      float tLeft, tRight;
+      childTest.entries(&bvh.nodes[left], range.min, range.max, tLeft, tRight);
+      const bool hitLeft = tLeft != kInfinity, hitRight = tRight != kInfinity;
       if (stats) stats->boxTests += 2;
       if (hitLeft) {
         if (hitRight) stack[size++] = left + 1;
