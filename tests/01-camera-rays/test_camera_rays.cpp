@@ -1,5 +1,6 @@
 // Autograder suite for task 1 — camera rays. Tests run from basic to
-// advanced; the first failure is usually the root cause.
+// advanced; the first failure is usually the root cause. candidate::f(...)
+// is the student's f, computed in the candidate process (calls.h).
 #include <doctest/doctest.h>
 
 #include <array>
@@ -7,7 +8,7 @@
 
 #include "check.h"
 #include "grading.h"
-#include "pathlab/tasks/camera_rays.h"
+#include "calls.h"
 
 using namespace pathlab;
 using namespace pathlab::test;
@@ -36,8 +37,8 @@ DVec3 expectedDirection(const Camera& camera, Point2 raster, IVec2 resolution) {
 }
 
 void checkRay(const Camera& camera, Point2 raster, IVec2 resolution, double tolerance = 2e-6) {
-  CameraBasis basis = cameraBasis(camera);
-  Ray ray = generateCameraRay(camera, basis, raster, resolution);
+  CameraBasis basis = candidate::cameraBasis(camera);
+  Ray ray = candidate::generateCameraRay(camera, basis, raster, resolution);
   DVec3 expected = expectedDirection(camera, raster, resolution);
   CAPTURE(raster.x);
   CAPTURE(raster.y);
@@ -77,7 +78,7 @@ TEST_CASE("T1.1 pixel sample: u = (0.5, 0.5) is the pixel centre (half-pixel off
           grading(2, "pixel (i, j) covers [i, i+1) x [j, j+1): its centre is (i + 0.5, j + 0.5); "
                      "return pixel + u")) {
   for (IVec2 pixel : {IVec2(0, 0), IVec2(3, 7), IVec2(799, 599), IVec2(1023, 0)}) {
-    Point2 p = pixelSamplePosition(pixel, Vec2(0.5f));
+    Point2 p = candidate::pixelSamplePosition(pixel, Vec2(0.5f));
     CAPTURE(pixel.x);
     CAPTURE(pixel.y);
     CHECK(p.x == doctest::Approx(pixel.x + 0.5f).epsilon(1e-7));
@@ -95,7 +96,7 @@ TEST_CASE("T1.1 pixel sample: u spreads samples uniformly over the whole pixel" 
   for (int i = 0; i < 16; ++i) {
     for (int j = 0; j < 16; ++j) {
       Vec2 u((float(i) + 0.5f) / 16.0f, (float(j) + 0.5f) / 16.0f);
-      Point2 p = pixelSamplePosition(pixel, u) - Point2(pixel);
+      Point2 p = candidate::pixelSamplePosition(pixel, u) - Point2(pixel);
       CAPTURE(u.x);
       CAPTURE(u.y);
       REQUIRE(p.x >= 0.0f);
@@ -113,7 +114,7 @@ TEST_CASE("T1.1 pixel sample: u spreads samples uniformly over the whole pixel" 
     }
   // The extremes of u stay inside the pixel.
   for (Vec2 u : {Vec2(0.0f), Vec2(0.99999994f), Vec2(0.0f, 0.99999994f)}) {
-    Point2 p = pixelSamplePosition(pixel, u);
+    Point2 p = candidate::pixelSamplePosition(pixel, u);
     CHECK(p.x >= 12.0f);
     CHECK(p.x <= 13.0f);
     CHECK(p.y >= 34.0f);
@@ -125,7 +126,7 @@ TEST_CASE("T1.2 camera basis: orthonormal, right-handed, forward points at lookA
           grading(3, "forward = normalize(lookAt - position); right = normalize(cross(forward, up)); "
                      "up = cross(right, forward) — normalise, and mind the order of the cross products")) {
   for (const Camera& camera : someCameras()) {
-    CameraBasis b = cameraBasis(camera);
+    CameraBasis b = candidate::cameraBasis(camera);
     checkOrthonormal(b);
     Vec3 forward = glm::normalize(camera.lookAt - camera.position);
     INFO("expected forward " << str(forward) << ", got " << str(b.forward));
@@ -146,10 +147,10 @@ TEST_CASE("T1.2 camera basis: up parallel to the view direction still gives a fi
       makeCamera({0, 0, 0}, {0, 0, -1}, {0, 1e-9f, -1}, 45),  // parallel to within rounding
   };
   for (const Camera& camera : cameras) {
-    CameraBasis b = cameraBasis(camera);
+    CameraBasis b = candidate::cameraBasis(camera);
     checkOrthonormal(b);
     CHECK(near(b.forward, glm::normalize(camera.lookAt - camera.position), 1e-5f));
-    Ray ray = generateCameraRay(camera, b, Point2(0.0f), IVec2(64, 48));
+    Ray ray = candidate::generateCameraRay(camera, b, Point2(0.0f), IVec2(64, 48));
     CHECK(finite(ray.direction));
   }
 }
@@ -178,11 +179,11 @@ TEST_CASE("T1.3 camera ray: corners and edges of the image sit at the field of v
 TEST_CASE("T1.3 camera ray: raster row 0 is the top of the image and column 0 the left" *
           grading(2, "raster y grows downwards: flip it (ndcY = 1 - 2 y / height); x grows to the right")) {
   Camera camera = makeCamera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 50);
-  CameraBasis basis = cameraBasis(camera);
-  Ray top = generateCameraRay(camera, basis, {50.0f, 0.5f}, {100, 80});
-  Ray bottom = generateCameraRay(camera, basis, {50.0f, 79.5f}, {100, 80});
-  Ray left = generateCameraRay(camera, basis, {0.5f, 40.0f}, {100, 80});
-  Ray right = generateCameraRay(camera, basis, {99.5f, 40.0f}, {100, 80});
+  CameraBasis basis = candidate::cameraBasis(camera);
+  Ray top = candidate::generateCameraRay(camera, basis, {50.0f, 0.5f}, {100, 80});
+  Ray bottom = candidate::generateCameraRay(camera, basis, {50.0f, 79.5f}, {100, 80});
+  Ray left = candidate::generateCameraRay(camera, basis, {0.5f, 40.0f}, {100, 80});
+  Ray right = candidate::generateCameraRay(camera, basis, {99.5f, 40.0f}, {100, 80});
   INFO("top " << str(top.direction) << " bottom " << str(bottom.direction));
   CHECK(top.direction.y > 0.1f);
   CHECK(bottom.direction.y < -0.1f);
@@ -201,11 +202,11 @@ TEST_CASE("T1.3 camera ray: non-square images keep square pixels (aspect = width
       checkRay(camera, raster, resolution);
     }
     // One pixel step subtends the same angle across and down at the centre.
-    CameraBasis basis = cameraBasis(camera);
+    CameraBasis basis = candidate::cameraBasis(camera);
     Point2 c = Point2(resolution) * 0.5f;
-    Vec3 d0 = generateCameraRay(camera, basis, c, resolution).direction;
-    Vec3 dx = generateCameraRay(camera, basis, c + Point2(1, 0), resolution).direction;
-    Vec3 dy = generateCameraRay(camera, basis, c + Point2(0, 1), resolution).direction;
+    Vec3 d0 = candidate::generateCameraRay(camera, basis, c, resolution).direction;
+    Vec3 dx = candidate::generateCameraRay(camera, basis, c + Point2(1, 0), resolution).direction;
+    Vec3 dy = candidate::generateCameraRay(camera, basis, c + Point2(0, 1), resolution).direction;
     CAPTURE(resolution.x);
     CAPTURE(resolution.y);
     CHECK(std::acos(std::min(1.0f, glm::dot(d0, dx))) ==
@@ -229,14 +230,14 @@ TEST_CASE("T1.3 camera ray: half-pixel offset — pixel centres, not corners, ar
                      "in generateCameraRay, and do not subtract it")) {
   // With an odd resolution the middle pixel's centre is the image centre.
   Camera camera = makeCamera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 60);
-  CameraBasis basis = cameraBasis(camera);
-  Ray centre = generateCameraRay(camera, basis, pixelSamplePosition({2, 1}, Vec2(0.5f)), {5, 3});
+  CameraBasis basis = candidate::cameraBasis(camera);
+  Ray centre = candidate::generateCameraRay(camera, basis, candidate::pixelSamplePosition({2, 1}, Vec2(0.5f)), {5, 3});
   INFO("direction " << str(centre.direction));
   CHECK(near(centre.direction, Vec3(0, 0, -1), 1e-6f));
   // Symmetric pixels look symmetrically.
-  Ray a = generateCameraRay(camera, basis, pixelSamplePosition({0, 0}, Vec2(0.5f)), {4, 2});
-  Ray b = generateCameraRay(camera, basis, pixelSamplePosition({3, 1}, Vec2(0.5f)), {4, 2});
+  Ray a = candidate::generateCameraRay(camera, basis, candidate::pixelSamplePosition({0, 0}, Vec2(0.5f)), {4, 2});
+  Ray b = candidate::generateCameraRay(camera, basis, candidate::pixelSamplePosition({3, 1}, Vec2(0.5f)), {4, 2});
   INFO("pixel (0,0) " << str(a.direction) << " pixel (3,1) " << str(b.direction));
   CHECK(near(a.direction, Vec3(-b.direction.x, -b.direction.y, b.direction.z), 1e-6f));
-  checkRay(camera, pixelSamplePosition({0, 0}, Vec2(0.5f)), {4, 2});
+  checkRay(camera, candidate::pixelSamplePosition({0, 0}, Vec2(0.5f)), {4, 2});
 }

@@ -1,6 +1,7 @@
 // Autograder suite for task 2 — ray–triangle and ray–sphere intersection.
 // Expected values come from double-precision computations on the same float
-// inputs. Tests run from basic to advanced.
+// inputs. Tests run from basic to advanced. candidate::f(...) is the
+// student's f, computed in the candidate process (calls.h).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -13,7 +14,7 @@
 #include "grading.h"
 #include "meshes.h"
 #include "pathlab/scene_io.h"
-#include "pathlab/tasks/intersection.h"
+#include "calls.h"
 
 using namespace pathlab;
 using namespace pathlab::test;
@@ -39,23 +40,21 @@ PlaneHit planeHit(const Ray& ray, const Point3& p0, const Point3& p1, const Poin
   return {glm::dot(e2, q) / det, glm::dot(s, p) / det, glm::dot(d, q) / det};
 }
 
-// Distinct surface crossings along a ray: hits of several triangles at the
-// same t (a shared edge or vertex) are one crossing.
-int crossings(const TriangleMesh& mesh, const Ray& ray) {
-  std::vector<float> ts;
-  for (const glm::uvec3& t : mesh.triangles) {
-    if (auto hit = intersectTriangle(ray, kAll, mesh.positions[t.x], mesh.positions[t.y], mesh.positions[t.z])) {
-      ts.push_back(hit->t);
+// Distinct surface crossings along each ray: hits of several triangles at
+// the same t (a shared edge or vertex) are one crossing.
+std::vector<int> crossings(const TriangleMesh& mesh, const std::vector<Ray>& rays) {
+  std::vector<int> counts;
+  for (std::vector<float> ts : candidate::meshHits(mesh, rays)) {
+    std::sort(ts.begin(), ts.end());
+    int count = 0;
+    float last = -1.0f;
+    for (float t : ts) {
+      if (count == 0 || t > last * (1.0f + 1e-4f)) ++count;
+      last = t;
     }
+    counts.push_back(count);
   }
-  std::sort(ts.begin(), ts.end());
-  int count = 0;
-  float last = -1.0f;
-  for (float t : ts) {
-    if (count == 0 || t > last * (1.0f + 1e-4f)) ++count;
-    last = t;
-  }
-  return count;
+  return counts;
 }
 
 // Smallest root of the ray–sphere quadratic in double, in range, or -1.
@@ -91,7 +90,7 @@ TEST_CASE("T2.1 triangle: a ray through the interior hits with the right t and b
           grading(3, "t is the distance along the unit direction; b1, b2 weight p1 and p2 (not p0): "
                      "b1 = e1 / det, b2 = e2 / det, t = tScaled / det")) {
   // Exact case: unit triangle in z = 0, ray straight down onto (0.25, 0.5).
-  auto hit = intersectTriangle(Ray{{0.25f, 0.5f, 2.0f}, {0, 0, -1}}, kAll, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  auto hit = candidate::intersectTriangle(Ray{{0.25f, 0.5f, 2.0f}, {0, 0, -1}}, kAll, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
   REQUIRE(hit.has_value());
   CHECK(hit->t == doctest::Approx(2.0f).epsilon(1e-6));
   CHECK(hit->b1 == doctest::Approx(0.25f).epsilon(1e-6));
@@ -107,7 +106,7 @@ TEST_CASE("T2.1 triangle: a ray through the interior hits with the right t and b
     Ray ray = rayTowards(target + random.unitVector() * random.uniform(0.5, 3.0), target);
     PlaneHit expected = planeHit(ray, p0, p1, p2);
     if (std::abs(glm::dot(glm::normalize(n), DVec3(ray.direction))) < 0.1) continue;  // no grazing here
-    auto h = intersectTriangle(ray, kAll, p0, p1, p2);
+    auto h = candidate::intersectTriangle(ray, kAll, p0, p1, p2);
     CAPTURE(i);
     REQUIRE(h.has_value());
     CHECK(h->t == doctest::Approx(expected.t).epsilon(1e-4));
@@ -122,20 +121,20 @@ TEST_CASE("T2.1 triangle: rays beside the edges, behind the origin or outside th
   const Point3 p0{0, 0, 0}, p1{1, 0, 0}, p2{0, 1, 0};
   const Vec3 down{0, 0, -1};
   // Inside, as a control: this one must hit.
-  REQUIRE(intersectTriangle(Ray{{0.2f, 0.2f, 1}, down}, kAll, p0, p1, p2).has_value());
+  REQUIRE(candidate::intersectTriangle(Ray{{0.2f, 0.2f, 1}, down}, kAll, p0, p1, p2).has_value());
   // Beside each of the three edges.
-  CHECK_FALSE(intersectTriangle(Ray{{0.2f, -0.01f, 1}, down}, kAll, p0, p1, p2).has_value());
-  CHECK_FALSE(intersectTriangle(Ray{{-0.01f, 0.2f, 1}, down}, kAll, p0, p1, p2).has_value());
-  CHECK_FALSE(intersectTriangle(Ray{{0.51f, 0.51f, 1}, down}, kAll, p0, p1, p2).has_value());
+  CHECK_FALSE(candidate::intersectTriangle(Ray{{0.2f, -0.01f, 1}, down}, kAll, p0, p1, p2).has_value());
+  CHECK_FALSE(candidate::intersectTriangle(Ray{{-0.01f, 0.2f, 1}, down}, kAll, p0, p1, p2).has_value());
+  CHECK_FALSE(candidate::intersectTriangle(Ray{{0.51f, 0.51f, 1}, down}, kAll, p0, p1, p2).has_value());
   // Behind the origin: the triangle is at t = -1.
-  CHECK_FALSE(intersectTriangle(Ray{{0.2f, 0.2f, -1}, down}, kAll, p0, p1, p2).has_value());
+  CHECK_FALSE(candidate::intersectTriangle(Ray{{0.2f, 0.2f, -1}, down}, kAll, p0, p1, p2).has_value());
   // Range: the hit is at t = 1.
-  CHECK_FALSE(intersectTriangle(Ray{{0.2f, 0.2f, 1}, down}, {0.0f, 0.999f}, p0, p1, p2).has_value());
-  CHECK_FALSE(intersectTriangle(Ray{{0.2f, 0.2f, 1}, down}, {1.001f, kInfinity}, p0, p1, p2).has_value());
-  CHECK(intersectTriangle(Ray{{0.2f, 0.2f, 1}, down}, {0.999f, 1.001f}, p0, p1, p2).has_value());
+  CHECK_FALSE(candidate::intersectTriangle(Ray{{0.2f, 0.2f, 1}, down}, {0.0f, 0.999f}, p0, p1, p2).has_value());
+  CHECK_FALSE(candidate::intersectTriangle(Ray{{0.2f, 0.2f, 1}, down}, {1.001f, kInfinity}, p0, p1, p2).has_value());
+  CHECK(candidate::intersectTriangle(Ray{{0.2f, 0.2f, 1}, down}, {0.999f, 1.001f}, p0, p1, p2).has_value());
   // From below (seen from the back side) the same range rules apply.
-  CHECK(intersectTriangle(Ray{{0.2f, 0.2f, -1}, {0, 0, 1}}, kAll, p0, p1, p2).has_value());
-  CHECK_FALSE(intersectTriangle(Ray{{0.2f, 0.2f, -1}, {0, 0, 1}}, {0.0f, 0.5f}, p0, p1, p2).has_value());
+  CHECK(candidate::intersectTriangle(Ray{{0.2f, 0.2f, -1}, {0, 0, 1}}, kAll, p0, p1, p2).has_value());
+  CHECK_FALSE(candidate::intersectTriangle(Ray{{0.2f, 0.2f, -1}, {0, 0, 1}}, {0.0f, 0.5f}, p0, p1, p2).has_value());
 }
 
 TEST_CASE("T2.1 triangle: both faces are hit (no back-face culling)" *
@@ -149,8 +148,8 @@ TEST_CASE("T2.1 triangle: both faces are hit (no back-face culling)" *
     DVec3 centroid = (DVec3(p0) + DVec3(p1) + DVec3(p2)) / 3.0;
     DVec3 side = glm::normalize(n) * 2.0;
     CAPTURE(i);
-    CHECK(intersectTriangle(rayTowards(centroid + side, centroid), kAll, p0, p1, p2).has_value());
-    CHECK(intersectTriangle(rayTowards(centroid - side, centroid), kAll, p0, p1, p2).has_value());
+    CHECK(candidate::intersectTriangle(rayTowards(centroid + side, centroid), kAll, p0, p1, p2).has_value());
+    CHECK(candidate::intersectTriangle(rayTowards(centroid - side, centroid), kAll, p0, p1, p2).has_value());
   }
 }
 
@@ -166,17 +165,12 @@ TEST_CASE("T2.1 triangle: shared edges and vertices of a closed mesh are crossed
     for (int k = 0; k < 3; ++k) edges.insert(std::minmax(t[k], t[(k + 1) % 3]));
   }
   Random random(23);
-  int rays = 0, wrong = 0;
+  std::vector<Ray> rays;
   auto shoot = [&](const DVec3& target) {
     DVec3 inward = glm::normalize(DVec3(0.3, -0.2, 0.1) - target);
     DVec3 direction = glm::normalize(inward + 0.6 * random.unitVector());
     if (glm::dot(direction, inward) < 0.3) direction = inward;
-    Ray ray = rayTowards(target - 3.0 * direction, target);
-    int n = crossings(sphere, ray);
-    ++rays;
-    if (n != 2) {
-      if (++wrong <= 5) MESSAGE("ray " << str(ray.origin) << " -> " << str(ray.direction) << " crossed " << n << " times");
-    }
+    rays.push_back(rayTowards(target - 3.0 * direction, target));
   };
   for (const auto& [a, b] : edges) {
     DVec3 pa(sphere.positions[a]), pb(sphere.positions[b]);
@@ -184,25 +178,32 @@ TEST_CASE("T2.1 triangle: shared edges and vertices of a closed mesh are crossed
     shoot(glm::mix(pa, pb, random.uniform()));
   }
   for (const Point3& p : sphere.positions) shoot(DVec3(p));
-  INFO(wrong << " of " << rays << " rays through edges and vertices did not cross the closed mesh exactly twice");
+  const std::vector<int> counts = crossings(sphere, rays);
+  int wrong = 0;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    if (counts[i] != 2 && ++wrong <= 5) {
+      MESSAGE("ray " << str(rays[i].origin) << " -> " << str(rays[i].direction) << " crossed " << counts[i] << " times");
+    }
+  }
+  INFO(wrong << " of " << rays.size() << " rays through edges and vertices did not cross the closed mesh exactly twice");
   CHECK(wrong == 0);
 
   // A flat grid whose edges and vertices sit on exact integers: rays
   // through them, straight and tilted, cross it exactly once.
   const TriangleMesh grid = planeGrid(6);
-  int gridWrong = 0, gridRays = 0;
+  std::vector<Ray> gridRays;
   for (int y = 1; y < 6; ++y) {
     for (int x = 1; x < 6; ++x) {
       for (DVec3 target : {DVec3(x, y, 0), DVec3(x + 0.5, y, 0), DVec3(x, y + 0.5, 0), DVec3(x + 0.5, y + 0.5, 0)}) {
         for (DVec3 direction : {DVec3(0, 0, -1), glm::normalize(DVec3(0.3, 0.2, -1)), glm::normalize(DVec3(-1, 1, -1))}) {
-          Ray ray{Point3(target - 2.0 * direction), Vec3(direction)};
-          ++gridRays;
-          if (crossings(grid, ray) != 1) ++gridWrong;
+          gridRays.push_back(Ray{Point3(target - 2.0 * direction), Vec3(direction)});
         }
       }
     }
   }
-  INFO(gridWrong << " of " << gridRays << " rays through grid edges and vertices did not cross it exactly once");
+  int gridWrong = 0;
+  for (int n : crossings(grid, gridRays)) gridWrong += n != 1;
+  INFO(gridWrong << " of " << gridRays.size() << " rays through grid edges and vertices did not cross it exactly once");
   CHECK(gridWrong == 0);
 }
 
@@ -214,11 +215,11 @@ TEST_CASE("T2.1 triangle: a ray lying in the triangle's plane misses, and nothin
                   Ray{{-1, -1, 0}, glm::normalize(Vec3(1, 1, 0))}, Ray{{0.1f, 0.1f, 0}, {1, 0, 0}}}) {
     CAPTURE(str(ray.origin));
     CAPTURE(str(ray.direction));
-    CHECK_FALSE(intersectTriangle(ray, kAll, p0, p1, p2).has_value());
+    CHECK_FALSE(candidate::intersectTriangle(ray, kAll, p0, p1, p2).has_value());
   }
   // Control: tilt the first ray slightly out of the plane and it hits.
   Ray tilted{{-1, 0.25f, 0.01f}, glm::normalize(Vec3(1, 0, -0.01f))};
-  auto hit = intersectTriangle(tilted, kAll, p0, p1, p2);
+  auto hit = candidate::intersectTriangle(tilted, kAll, p0, p1, p2);
   REQUIRE(hit.has_value());
   CHECK(std::isfinite(hit->t));
   CHECK(std::isfinite(hit->b1));
@@ -245,12 +246,12 @@ TEST_CASE("T2.1 triangle: zero-area triangles are never hit" *
         CAPTURE(str(t.p0));
         CAPTURE(str(t.p1));
         CAPTURE(str(t.p2));
-        CHECK_FALSE(intersectTriangle(ray, kAll, t.p0, t.p1, t.p2).has_value());
+        CHECK_FALSE(candidate::intersectTriangle(ray, kAll, t.p0, t.p1, t.p2).has_value());
       }
     }
   }
   // Control: a proper triangle next to them is hit.
-  CHECK(intersectTriangle(Ray{{0.2f, 0.2f, 1}, {0, 0, -1}}, kAll, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}).has_value());
+  CHECK(candidate::intersectTriangle(Ray{{0.2f, 0.2f, 1}, {0, 0, -1}}, kAll, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}).has_value());
 }
 
 TEST_CASE("T2.1 triangle: hits and misses are exact at scales 1e-3..1e5 and far from the origin" *
@@ -281,10 +282,10 @@ TEST_CASE("T2.1 triangle: hits and misses are exact at scales 1e-3..1e5 and far 
         CAPTURE(scale);
         CAPTURE(away);
         CAPTURE(i);
-        auto h = intersectTriangle(hitRay, kAll, p0, p1, p2);
+        auto h = candidate::intersectTriangle(hitRay, kAll, p0, p1, p2);
         REQUIRE(h.has_value());
         CHECK(h->t == doctest::Approx(expected.t).epsilon(1e-4));
-        CHECK_FALSE(intersectTriangle(missRay, kAll, p0, p1, p2).has_value());
+        CHECK_FALSE(candidate::intersectTriangle(missRay, kAll, p0, p1, p2).has_value());
         ++checked;
       }
     }
@@ -301,7 +302,8 @@ TEST_CASE("T2.1 triangle: every triangle of the native-scale Stanford bunny is h
   Scene scene = loadSceneFromJson("{\"meshes\": [{\"obj\": \"" + path + "\"}]}", "bunny", "");
   const TriangleMesh& mesh = scene.meshes.at(0);
   Random random(25);
-  int tested = 0, missed = 0, wrongT = 0;
+  std::vector<calls::IntersectTriangle::Args> tests;
+  std::vector<PlaneHit> expected;
   for (const glm::uvec3& t : mesh.triangles) {
     const Point3 &p0 = mesh.positions[t.x], &p1 = mesh.positions[t.y], &p2 = mesh.positions[t.z];
     DVec3 n = glm::cross(DVec3(p1 - p0), DVec3(p2 - p0));
@@ -309,14 +311,22 @@ TEST_CASE("T2.1 triangle: every triangle of the native-scale Stanford bunny is h
     DVec3 centroid = (DVec3(p0) + DVec3(p1) + DVec3(p2)) / 3.0;
     DVec3 direction = glm::normalize(glm::normalize(n) + 0.7 * random.unitVector());
     Ray ray = rayTowards(centroid + 0.05 * direction, centroid);
-    PlaneHit expected = planeHit(ray, p0, p1, p2);
+    PlaneHit e = planeHit(ray, p0, p1, p2);
     // The double-precision oracle must agree the ray hits well inside.
-    if (expected.b1 < 0.01 || expected.b2 < 0.01 || expected.b1 + expected.b2 > 0.99 || expected.t <= 0) continue;
-    ++tested;
-    auto h = intersectTriangle(ray, kAll, p0, p1, p2);
-    if (!h) {
-      if (++missed <= 3) MESSAGE("missed triangle " << str(p0) << " " << str(p1) << " " << str(p2));
-    } else if (std::abs(h->t - expected.t) > 1e-4 * expected.t) {
+    if (e.b1 < 0.01 || e.b2 < 0.01 || e.b1 + e.b2 > 0.99 || e.t <= 0) continue;
+    tests.emplace_back(ray, kAll, p0, p1, p2);
+    expected.push_back(e);
+  }
+  const std::vector<std::optional<TriangleHit>> hits = candidate::intersectTriangles(tests);
+  const int tested = int(tests.size());
+  int missed = 0, wrongT = 0;
+  for (size_t i = 0; i < hits.size(); ++i) {
+    if (!hits[i]) {
+      if (++missed <= 3) {
+        MESSAGE("missed triangle " << str(std::get<2>(tests[i])) << " " << str(std::get<3>(tests[i])) << " "
+                                   << str(std::get<4>(tests[i])));
+      }
+    } else if (std::abs(hits[i]->t - expected[i].t) > 1e-4 * expected[i].t) {
       ++wrongT;
     }
   }
@@ -338,7 +348,7 @@ TEST_CASE("T2.2 sphere: a ray from outside hits the near side at the right t" *
     Ray ray = rayPastSphere(random, center, radius, radius * random.uniform(1.5, 20.0), random.uniform(0.0, 0.95));
     double expected = sphereOracle(ray, center, radius);
     REQUIRE(expected > 0);
-    auto t = intersectSphere(ray, kAll, center, radius);
+    auto t = candidate::intersectSphere(ray, kAll, center, radius);
     CAPTURE(i);
     REQUIRE(t.has_value());
     CHECK(*t == doctest::Approx(expected).epsilon(1e-4));
@@ -351,13 +361,13 @@ TEST_CASE("T2.2 sphere: misses beside, behind and outside the range; the far sid
   const Point3 c{0, 0, -5};
   const float r = 1.0f;
   const Ray ahead{{0, 0, 0}, {0, 0, -1}};  // roots at t = 4 and t = 6
-  REQUIRE(intersectSphere(ahead, kAll, c, r).has_value());
-  CHECK(*intersectSphere(ahead, kAll, c, r) == doctest::Approx(4.0f));
-  CHECK_FALSE(intersectSphere(Ray{{1.01f, 0, 0}, {0, 0, -1}}, kAll, c, r).has_value());   // beside
-  CHECK_FALSE(intersectSphere(Ray{{0, 0, 0}, {0, 0, 1}}, kAll, c, r).has_value());        // behind
-  CHECK_FALSE(intersectSphere(ahead, {0.0f, 3.9f}, c, r).has_value());                    // too near
-  CHECK_FALSE(intersectSphere(ahead, {6.1f, kInfinity}, c, r).has_value());               // too far
-  auto far = intersectSphere(ahead, {4.5f, kInfinity}, c, r);                             // skip the near root
+  REQUIRE(candidate::intersectSphere(ahead, kAll, c, r).has_value());
+  CHECK(*candidate::intersectSphere(ahead, kAll, c, r) == doctest::Approx(4.0f));
+  CHECK_FALSE(candidate::intersectSphere(Ray{{1.01f, 0, 0}, {0, 0, -1}}, kAll, c, r).has_value());   // beside
+  CHECK_FALSE(candidate::intersectSphere(Ray{{0, 0, 0}, {0, 0, 1}}, kAll, c, r).has_value());        // behind
+  CHECK_FALSE(candidate::intersectSphere(ahead, {0.0f, 3.9f}, c, r).has_value());                    // too near
+  CHECK_FALSE(candidate::intersectSphere(ahead, {6.1f, kInfinity}, c, r).has_value());               // too far
+  auto far = candidate::intersectSphere(ahead, {4.5f, kInfinity}, c, r);                             // skip the near root
   REQUIRE(far.has_value());
   CHECK(*far == doctest::Approx(6.0f));
 }
@@ -372,7 +382,7 @@ TEST_CASE("T2.2 sphere: from inside, the hit is on the far side (origin inside)"
     DVec3 origin = DVec3(center) + random.unitVector() * (radius * random.uniform(0.0, 0.9));
     Ray ray{Point3(origin), Vec3(random.unitVector())};
     double expected = sphereOracle(ray, center, radius);
-    auto t = intersectSphere(ray, kAll, center, radius);
+    auto t = candidate::intersectSphere(ray, kAll, center, radius);
     CAPTURE(i);
     REQUIRE(t.has_value());
     CHECK(*t == doctest::Approx(expected).epsilon(1e-4));
@@ -391,7 +401,7 @@ TEST_CASE("T2.2 sphere: a small sphere far away is hit where it is (no cancellat
       if (offset > 0.9 && offset < 1.1) continue;  // leave the tangent band to its own test
       Ray ray = rayPastSphere(random, center, float(radius), distance, offset);
       double expected = sphereOracle(ray, center, float(radius));
-      auto t = intersectSphere(ray, kAll, center, float(radius));
+      auto t = candidate::intersectSphere(ray, kAll, center, float(radius));
       ++total;
       bool ok = (expected > 0) == t.has_value();
       if (ok && t) ok = std::abs(*t - expected) <= 0.05 * radius + 4e-7 * expected;
@@ -417,12 +427,12 @@ TEST_CASE("T2.2 sphere: tangent rays — just inside hits, just outside misses, 
     Ray outside = rayPastSphere(random, center, radius, 5.0 * radius, 1.0 + 1e-3);
     Ray exact = rayPastSphere(random, center, radius, 5.0 * radius, 1.0);
     CAPTURE(i);
-    auto hit = intersectSphere(inside, kAll, center, radius);
+    auto hit = candidate::intersectSphere(inside, kAll, center, radius);
     REQUIRE(hit.has_value());
     CHECK(std::isfinite(*hit));
     CHECK(*hit == doctest::Approx(sphereOracle(inside, center, radius)).epsilon(1e-3));
-    CHECK_FALSE(intersectSphere(outside, kAll, center, radius).has_value());
-    auto grazing = intersectSphere(exact, kAll, center, radius);
+    CHECK_FALSE(candidate::intersectSphere(outside, kAll, center, radius).has_value());
+    auto grazing = candidate::intersectSphere(exact, kAll, center, radius);
     if (grazing) CHECK(std::isfinite(*grazing));
   }
 }
@@ -442,10 +452,10 @@ TEST_CASE("T2.2 sphere: a ray starting on the surface finds the far side going i
       Interval range{float(1e-4 * radius), kInfinity};
       CAPTURE(radius);
       CAPTURE(i);
-      auto t = intersectSphere(Ray{origin, Vec3(in)}, range, center, float(radius));
+      auto t = candidate::intersectSphere(Ray{origin, Vec3(in)}, range, center, float(radius));
       REQUIRE(t.has_value());
       CHECK(*t == doctest::Approx(-2.0 * radius * glm::dot(in, normal)).epsilon(1e-3));
-      CHECK_FALSE(intersectSphere(Ray{origin, Vec3(-in)}, range, center, float(radius)).has_value());
+      CHECK_FALSE(candidate::intersectSphere(Ray{origin, Vec3(-in)}, range, center, float(radius)).has_value());
     }
   }
 }
@@ -461,7 +471,7 @@ TEST_CASE("T2.3 triangle surface point: position from barycentrics, normal from 
     DVec3 n = glm::cross(DVec3(p1 - p0), DVec3(p2 - p0));
     if (glm::length(n) < 0.1) continue;
     float b1 = float(random.uniform(0, 0.6)), b2 = float(random.uniform(0, 0.4));
-    SurfacePoint s = triangleSurfacePoint(TriangleHit{1.0f, b1, b2}, p0, p1, p2, nullptr);
+    SurfacePoint s = candidate::triangleSurfacePoint(TriangleHit{1.0f, b1, b2}, p0, p1, p2, nullptr);
     DVec3 point = (1.0 - b1 - b2) * DVec3(p0) + double(b1) * DVec3(p1) + double(b2) * DVec3(p2);
     CAPTURE(i);
     INFO("expected point " << str(Vec3(point)) << ", got " << str(s.point));
@@ -477,7 +487,7 @@ TEST_CASE("T2.3 triangle surface point: vertex normals are interpolated and deci
                      "normal, flip the geometric one; if it is zero, use the geometric normal")) {
   const Point3 p0{0, 0, 0}, p1{1, 0, 0}, p2{0, 1, 0};  // winding normal +z
   const Vec3 up[3] = {glm::normalize(Vec3(-0.3f, 0, 1)), glm::normalize(Vec3(0.3f, 0, 1)), Vec3(0, 0, 1)};
-  SurfacePoint s = triangleSurfacePoint(TriangleHit{1.0f, 0.5f, 0.25f}, p0, p1, p2, up);
+  SurfacePoint s = candidate::triangleSurfacePoint(TriangleHit{1.0f, 0.5f, 0.25f}, p0, p1, p2, up);
   Vec3 expected = glm::normalize(0.25f * up[0] + 0.5f * up[1] + 0.25f * up[2]);
   INFO("expected shading normal " << str(expected) << ", got " << str(s.shadingNormal));
   CHECK(near(s.shadingNormal, expected, 1e-5f));
@@ -485,13 +495,13 @@ TEST_CASE("T2.3 triangle surface point: vertex normals are interpolated and deci
 
   // Vertex normals pointing down: the geometric normal follows them.
   const Vec3 down[3] = {Vec3(0, 0, -1), glm::normalize(Vec3(0.2f, 0, -1)), Vec3(0, 0, -1)};
-  s = triangleSurfacePoint(TriangleHit{1.0f, 0.2f, 0.3f}, p0, p1, p2, down);
+  s = candidate::triangleSurfacePoint(TriangleHit{1.0f, 0.2f, 0.3f}, p0, p1, p2, down);
   CHECK(s.shadingNormal.z < -0.9f);
   CHECK(near(s.geometricNormal, Vec3(0, 0, -1), 1e-6f));
 
   // Opposite normals cancel: fall back to the geometric normal, never NaN.
   const Vec3 opposite[3] = {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(0, 0, 1)};
-  s = triangleSurfacePoint(TriangleHit{1.0f, 0.5f, 0.0f}, p0, p1, p2, opposite);
+  s = candidate::triangleSurfacePoint(TriangleHit{1.0f, 0.5f, 0.0f}, p0, p1, p2, opposite);
   REQUIRE(finite(s.shadingNormal));
   CHECK(near(s.shadingNormal, s.geometricNormal, 1e-6f));
   CHECK(std::abs(glm::length(s.geometricNormal) - 1.0f) < 1e-6f);
@@ -509,7 +519,7 @@ TEST_CASE("T2.4 sphere surface point: on the sphere, with the outward unit norma
                          : rayPastSphere(random, center, radius, radius * 3.0, random.uniform(0, 0.9));
     double t = sphereOracle(ray, center, radius);
     REQUIRE(t > 0);
-    SurfacePoint s = sphereSurfacePoint(ray, float(t), center, radius);
+    SurfacePoint s = candidate::sphereSurfacePoint(ray, float(t), center, radius);
     DVec3 expectedNormal = glm::normalize(DVec3(ray.origin) + t * DVec3(ray.direction) - DVec3(center));
     CAPTURE(i);
     INFO("expected normal " << str(Vec3(expectedNormal)) << ", got " << str(s.geometricNormal));

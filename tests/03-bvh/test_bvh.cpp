@@ -2,6 +2,8 @@
 // force over every primitive (framework/src/scene_intersect.cpp), so any
 // correct tree and traversal passes; build quality is compared with the
 // reference's SAH cost. All inputs are seeded: no false failures.
+// candidate::f(...) is the student's f, computed in the candidate process
+// (calls.h); brute force and the tree checks run here, in the judge.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -12,7 +14,7 @@
 #include "meshes.h"
 #include "pathlab/accelerator.h"
 #include "pathlab/scene_intersect.h"
-#include "pathlab/tasks/bvh.h"
+#include "calls.h"
 #include "scenes.h"
 
 using namespace pathlab;
@@ -25,14 +27,12 @@ constexpr Interval kAll{0.0f, kInfinity};
 struct Built {
   std::vector<Aabb> bounds;
   Bvh bvh;
-  LeafGeometry geometry;
 };
 
 Built build(const Scene& scene) {
   Built b;
   b.bounds = primitiveBounds(scene);
-  b.bvh = buildBvh(b.bounds);
-  b.geometry = LeafGeometry(scene, b.bvh.primitives);
+  b.bvh = candidate::buildBvh(b.bounds);
   return b;
 }
 
@@ -57,9 +57,13 @@ Ray randomRay(Random& random, const Scene& scene, double scale, DVec3 offset) {
 
 // Compares the BVH's closest hit with brute force; returns mismatches.
 int compareWithBruteForce(const Scene& scene, const Built& b, const std::vector<Ray>& rays, Interval range = kAll) {
+  std::vector<calls::RayInRange> queries;
+  for (const Ray& ray : rays) queries.emplace_back(ray, range);
+  const std::vector<calls::ClosestResult> results = candidate::intersectClosest(b.bvh, scene, queries);
   int mismatches = 0;
-  for (const Ray& ray : rays) {
-    std::optional<PrimitiveHit> hit = intersectClosest(b.bvh, b.geometry, ray, range);
+  for (size_t i = 0; i < rays.size(); ++i) {
+    const Ray& ray = rays[i];
+    const std::optional<PrimitiveHit>& hit = std::get<0>(results[i]);
     std::optional<Hit> expected = intersectBruteForce(scene, ray, range);
     // Coplanar or touching primitives can tie to within rounding: a few ulps.
     bool same = hit.has_value() == expected.has_value() &&
@@ -98,7 +102,7 @@ TEST_CASE("T3.1 box: rays through, beside and behind a box, and the range, give 
           grading(3, "entry = max over axes of min(t0, t1), exit = min over axes of max(t0, t1), both "
                      "clipped to range; hit when entry <= exit; return entry")) {
   const Aabb box{{1, 1, 1}, {2, 3, 4}};
-  auto test = [&](Ray ray, Interval range) { return intersectBox(box, ray, 1.0f / ray.direction, range); };
+  auto test = [&](Ray ray, Interval range) { return candidate::intersectBox(box, ray, 1.0f / ray.direction, range); };
   const Vec3 d = glm::normalize(Vec3(1, 1, 1));
   auto t = test(Ray{{0, 0, 0}, d}, kAll);  // enters at x = y = z = 1
   REQUIRE(t.has_value());
@@ -116,7 +120,7 @@ TEST_CASE("T3.1 box: rays through, beside and behind a box, and the range, give 
   CHECK(*back == doctest::Approx(std::sqrt(3.0f)).epsilon(1e-6));
   // A flat box (zero thickness, e.g. around an axis-aligned quad) is hit.
   const Aabb flat{{0, 0, 2}, {1, 1, 2}};
-  auto f = intersectBox(flat, Ray{{0.5f, 0.5f, 0}, {0, 0, 1}}, 1.0f / Vec3(0, 0, 1), kAll);
+  auto f = candidate::intersectBox(flat, Ray{{0.5f, 0.5f, 0}, {0, 0, 1}}, 1.0f / Vec3(0, 0, 1), kAll);
   REQUIRE(f.has_value());
   CHECK(*f == doctest::Approx(2.0f));
 }
@@ -134,12 +138,12 @@ TEST_CASE("T3.1 box: axis-parallel rays (infinite inverse direction) hit inside 
       origin[axis] = -5.0f * sign;
       CAPTURE(axis);
       CAPTURE(sign);
-      auto t = intersectBox(box, Ray{origin, d}, inv, kAll);
+      auto t = candidate::intersectBox(box, Ray{origin, d}, inv, kAll);
       REQUIRE(t.has_value());
       CHECK(*t == doctest::Approx(4.0f));
       Point3 outside = origin;
       outside[(axis + 1) % 3] = 1.5f;  // parallel to the box, beside it
-      CHECK_FALSE(intersectBox(box, Ray{outside, d}, inv, kAll).has_value());
+      CHECK_FALSE(candidate::intersectBox(box, Ray{outside, d}, inv, kAll).has_value());
     }
   }
 }
@@ -162,7 +166,7 @@ TEST_CASE("T3.1 box: a ray lying exactly in a slab plane still hits (no NaN miss
         origin[axis] = plane;
         origin[along] = -2.0f;
         ++tried;
-        if (!intersectBox(box, Ray{origin, d}, 1.0f / d, kAll)) {
+        if (!candidate::intersectBox(box, Ray{origin, d}, 1.0f / d, kAll)) {
           ++misses;
           MESSAGE("missed: origin " << str(origin) << ", direction (" << d.x << ", " << d.y << ", " << d.z << ")");
         }
@@ -219,8 +223,8 @@ TEST_CASE("T3.2 build: a single primitive and an empty scene" *
   Scene empty;
   Built e = build(empty);
   CHECK(e.bvh.nodes.empty());
-  CHECK_FALSE(intersectClosest(e.bvh, e.geometry, Ray{}, kAll).has_value());
-  CHECK_FALSE(intersectAny(e.bvh, e.geometry, Ray{}, kAll));
+  CHECK_FALSE(candidate::intersectClosest(e.bvh, empty, Ray{}, kAll).has_value());
+  CHECK_FALSE(candidate::intersectAny(e.bvh, empty, Ray{}, kAll));
 
   Scene one;
   one.materials.push_back(Material{.name = "default"});
@@ -229,11 +233,11 @@ TEST_CASE("T3.2 build: a single primitive and an empty scene" *
   Built b = build(one);
   requireValid(b, 1);
   CHECK(b.bvh.nodes.size() == 1);
-  auto hit = intersectClosest(b.bvh, b.geometry, Ray{{0, 0, 0}, {0, 0, -1}}, kAll);
+  auto hit = candidate::intersectClosest(b.bvh, one, Ray{{0, 0, 0}, {0, 0, -1}}, kAll);
   REQUIRE(hit.has_value());
   CHECK(hit->t == doctest::Approx(4.0f));
-  CHECK(intersectAny(b.bvh, b.geometry, Ray{{0, 0, 0}, {0, 0, -1}}, kAll));
-  CHECK_FALSE(intersectAny(b.bvh, b.geometry, Ray{{0, 0, 0}, {0, 0, 1}}, kAll));
+  CHECK(candidate::intersectAny(b.bvh, one, Ray{{0, 0, 0}, {0, 0, -1}}, kAll));
+  CHECK_FALSE(candidate::intersectAny(b.bvh, one, Ray{{0, 0, 0}, {0, 0, 1}}, kAll));
 }
 
 TEST_CASE("T3.2 build: the tree's SAH cost is close to the reference's (no huge leaves, no poor splits)" *
@@ -339,12 +343,17 @@ TEST_CASE("T3.4 any hit: agrees with closest hit, and respects the range (shadow
   Scene scene = randomScene(random, 3000, 100, 1.0);
   Built b = build(scene);
   requireValid(b, scene.primitives.size());
-  int wrong = 0;
+  std::vector<calls::RayInRange> queries;
   for (int i = 0; i < 3000; ++i) {
     Ray ray = randomRay(random, scene, 1.0, DVec3(0.0));
-    Interval range{0.0f, float(random.uniform(0.1, 3.0))};
+    queries.emplace_back(ray, Interval{0.0f, float(random.uniform(0.1, 3.0))});
+  }
+  const std::vector<calls::AnyResult> results = candidate::intersectAny(b.bvh, scene, queries);
+  int wrong = 0;
+  for (size_t i = 0; i < queries.size(); ++i) {
+    const auto& [ray, range] = queries[i];
     bool expected = intersectBruteForce(scene, ray, range).has_value();
-    if (intersectAny(b.bvh, b.geometry, ray, range) != expected && ++wrong <= 3) {
+    if (std::get<0>(results[i]) != expected && ++wrong <= 3) {
       MESSAGE("ray " << str(ray.origin) << " -> " << str(ray.direction) << " up to t = " << range.max
                      << ": expected " << (expected ? "blocked" : "free"));
     }
@@ -360,7 +369,7 @@ TEST_CASE("T3.4 any hit: stops at the first hit (early exit), and counts its wor
   requireValid(b, scene.primitives.size());
   TraversalStats stats;
   Ray ray{{0.1f, 0.2f, 1.0f}, {0, 0, -1}};
-  REQUIRE(intersectAny(b.bvh, b.geometry, ray, kAll, &stats));
+  REQUIRE(candidate::intersectAny(b.bvh, scene, ray, kAll, &stats));
   INFO("primitives tested " << stats.primitiveTests << ", nodes visited " << stats.nodesVisited);
   CHECK(stats.primitiveTests >= 1);
   CHECK(stats.nodesVisited >= 1);

@@ -2,6 +2,8 @@
 // compared with exact answers (Lambert's polygon formula, the disk formula,
 // the inverse-square law) within 5 measured standard errors: a correct
 // estimator fails a check with probability 5.7e-7. Seeds are fixed.
+// candidate::f(...) is the student's f, computed in the candidate process
+// (calls.h); scenes, hits and exact answers are made here, in the judge.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -10,7 +12,7 @@
 #include "check.h"
 #include "grading.h"
 #include "pathlab/bsdf.h"
-#include "pathlab/tasks/direct_lighting.h"
+#include "calls.h"
 #include "pathlab/tasks/intersection.h"
 #include "render_support.h"
 #include "statistics.h"
@@ -45,13 +47,10 @@ Hit hitFromAbove(TraceContext& context, Point3 target, Vec3 from = Vec3(0.0f, 1.
 // Mean and standard error of the direct lighting estimate (green channel)
 // at `hit`, seen from `wo`, over n independent sample streams.
 MeanEstimate estimate(TraceContext& context, const Hit& hit, const Vec3& wo, int n, uint64_t seed = 1) {
-  const Bsdf bsdf(context.scene.materials[hit.material], hit, wo);
+  std::vector<calls::DirectQuery> queries;
+  for (int i = 0; i < n; ++i) queries.emplace_back(hit, wo, uint32_t(i), testSeed(seed));
   MeanEstimate m;
-  for (int i = 0; i < n; ++i) {
-    Sampler sampler(uint32_t(i), 0, testSeed(seed));
-    Color L = estimateDirectLighting(context, hit, bsdf, wo, sampler);
-    m.add(L.y);
-  }
+  for (const Color& L : candidate::estimateDirectLighting(context, queries)) m.add(L.y);
   return m;
 }
 
@@ -70,13 +69,13 @@ Scene floorScene() {
 TEST_CASE("T4.1 Lambertian BRDF: f = albedo / pi, so the reflected fraction is the albedo" *
           grading(2, "f = albedo / pi: without the 1/pi a surface reflects pi times the light it receives")) {
   for (Color albedo : {Color(1.0f), Color(0.5f, 0.25f, 0.0f), Color(0.0f)}) {
-    Color f = lambertianBrdf(albedo);
+    Color f = candidate::lambertianBrdf(albedo);
     CHECK(f.x == doctest::Approx(albedo.x / M_PI).epsilon(1e-6));
     CHECK(f.y == doctest::Approx(albedo.y / M_PI).epsilon(1e-6));
     CHECK(f.z == doctest::Approx(albedo.z / M_PI).epsilon(1e-6));
   }
   // integral over the hemisphere of f cos = f * pi.
-  CHECK(double(lambertianBrdf(Color(0.7f)).x) * M_PI == doctest::Approx(0.7).epsilon(1e-6));
+  CHECK(double(candidate::lambertianBrdf(Color(0.7f)).x) * M_PI == doctest::Approx(0.7).epsilon(1e-6));
 }
 
 // ---------------------------------------------------------------- T4.2
@@ -85,7 +84,12 @@ TEST_CASE("T4.2 ray origins: rays leaving a surface never hit it again, at scale
           grading(3, "offset the origin along the geometric normal flipped towards the new direction, by a "
                      "number of float ulps (scale-independent), not by a fixed epsilon")) {
   Random random(61);
-  int selfHits = 0, rays = 0, tooFar = 0;
+  struct Leaving {
+    Point3 p0, p1, p2, point;
+    Vec3 direction;
+  };
+  std::vector<Leaving> leaving;
+  std::vector<calls::OffsetRayOrigin::Args> queries;
   for (double scale : {1e-3, 1.0, 1e2, 1e4, 1e5}) {
     for (int i = 0; i < 300; ++i) {
       DVec3 center = random.inCube(scale * 10.0);
@@ -102,14 +106,19 @@ TEST_CASE("T4.2 ray origins: rays leaving a surface never hit it again, at scale
       SurfacePoint s = triangleSurfacePoint(*hit, p0, p1, p2, nullptr);
       for (int k = 0; k < 20; ++k) {
         // Leave on either side, at any angle, including grazing.
-        DVec3 d = random.unitVector();
-        Vec3 direction(d);
-        Point3 origin = offsetRayOrigin(s.point, s.geometricNormal, direction);
-        ++rays;
-        if (intersectTriangle(Ray{origin, direction}, kAll, p0, p1, p2)) ++selfHits;
-        if (glm::length(DVec3(origin) - DVec3(s.point)) > 1e-3 * glm::length(DVec3(s.point)) + 1e-4) ++tooFar;
+        Vec3 direction(random.unitVector());
+        leaving.push_back({p0, p1, p2, s.point, direction});
+        queries.emplace_back(s.point, s.geometricNormal, direction);
       }
     }
+  }
+  const std::vector<Point3> origins = candidate::offsetRayOrigins(queries);
+  const int rays = int(origins.size());
+  int selfHits = 0, tooFar = 0;
+  for (size_t i = 0; i < origins.size(); ++i) {
+    const Leaving& l = leaving[i];
+    if (intersectTriangle(Ray{origins[i], l.direction}, kAll, l.p0, l.p1, l.p2)) ++selfHits;
+    if (glm::length(DVec3(origins[i]) - DVec3(l.point)) > 1e-3 * glm::length(DVec3(l.point)) + 1e-4) ++tooFar;
   }
   INFO(selfHits << " of " << rays << " rays hit the triangle they leave; " << tooFar << " origins moved too far");
   CHECK(rays > 20000);
@@ -128,7 +137,7 @@ TEST_CASE("T4.3 light direction: pdf = pdfArea r^2 / cos(theta'), nothing from a
   sample.pdfArea = 0.25f;
   sample.radiance = Color(1.0f);
   const Point3 from(1, 0, 0.5f);
-  auto d = lightDirection(from, sample);
+  auto d = candidate::lightDirection(from, sample);
   REQUIRE(d.has_value());
   const DVec3 toLight = DVec3(sample.point) - DVec3(from);
   const double r = glm::length(toLight);
@@ -139,11 +148,11 @@ TEST_CASE("T4.3 light direction: pdf = pdfArea r^2 / cos(theta'), nothing from a
   CHECK(d->pdfSolidAngle == doctest::Approx(0.25 * r * r / cosLight).epsilon(1e-5));
   // The same light turned to face up: seen from behind, it gives nothing.
   sample.normal = -sample.normal;
-  CHECK_FALSE(lightDirection(from, sample).has_value());
+  CHECK_FALSE(candidate::lightDirection(from, sample).has_value());
   // Edge-on (cos = 0) and a point on the light itself: nothing, never Inf.
   sample.normal = Vec3(0, 0, 1);
-  CHECK_FALSE(lightDirection(Point3(1, 2, 0), sample).has_value());
-  CHECK_FALSE(lightDirection(sample.point, sample).has_value());
+  CHECK_FALSE(candidate::lightDirection(Point3(1, 2, 0), sample).has_value());
+  CHECK_FALSE(candidate::lightDirection(sample.point, sample).has_value());
 }
 
 // ---------------------------------------------------------------- T4.4
@@ -292,12 +301,13 @@ TEST_CASE("T4.4 direct lighting: no shadow acne on a large plane lit at grazing 
                                            Color(1.0f)});
     Rig rig(std::move(scene));
     TraceContext context = rig.context();
+    std::vector<calls::DirectQuery> queries;
     for (int i = 0; i < 500; ++i) {
       Point3 target(float(random.uniform(-20, 20) * scale), 0.37f * s, float(random.uniform(-20, 20) * scale));
       Hit hit = hitFromAbove(context, target, Vec3(0.3f * s, s, 0.1f * s));
-      Sampler sampler(uint32_t(i), 0, testSeed(3));
-      const Bsdf bsdf(context.scene.materials[hit.material], hit, Vec3(0, 1, 0));
-      Color L = estimateDirectLighting(context, hit, bsdf, Vec3(0, 1, 0), sampler);
+      queries.emplace_back(hit, Vec3(0, 1, 0), uint32_t(i), testSeed(3));
+    }
+    for (const Color& L : candidate::estimateDirectLighting(context, queries)) {
       ++points;
       if (!(L.y > 0.0f)) ++dark;
     }

@@ -3,7 +3,8 @@
 // intensity pi at the centre of a sphere of albedo 1/2 gives L = 1; an
 // albedo-1 object in a white furnace vanishes. Means are compared within 5
 // measured standard errors (false failure 5.7e-7 per check); the sampler's
-// chi-square test uses alpha = 1e-4. Seeds are fixed.
+// chi-square test uses alpha = 1e-4. Seeds are fixed. candidate::f(...) is
+// the student's f, computed in the candidate process (calls.h).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -13,7 +14,7 @@
 #include "meshes.h"
 #include "pathlab/bsdf.h"
 #include "pathlab/scene_io.h"
-#include "pathlab/tasks/path_tracing.h"
+#include "calls.h"
 #include "render_support.h"
 #include "statistics.h"
 
@@ -37,12 +38,10 @@ Scene closedEnclosure(float rho, float Le) {
 // uniformly random directions.
 MeanEstimate pathMean(TraceContext& context, Point3 origin, int n, uint64_t seed = 5) {
   Random random{uint32_t(seed)};
+  std::vector<calls::PathQuery> queries;
+  for (int i = 0; i < n; ++i) queries.emplace_back(Ray{origin, Vec3(random.unitVector())}, uint32_t(i), testSeed(seed));
   MeanEstimate m;
-  for (int i = 0; i < n; ++i) {
-    Sampler sampler(uint32_t(i), 0, testSeed(seed));
-    Color L = tracePath(context, Ray{origin, Vec3(random.unitVector())}, sampler);
-    m.add(L.y);
-  }
+  for (const Color& L : candidate::tracePaths(context, queries)) m.add(L.y);
   return m;
 }
 
@@ -60,23 +59,22 @@ TEST_CASE("T5.1 diffuse sampling: directions follow their pdf (chi-square, 10^6 
           grading(3, "the pdf must describe the sampler exactly: cosine-weighted (r = sqrt(u.x), z = sqrt(1 - "
                      "u.x)) has p = cos(theta)/pi; it must integrate to 1 and be 0 below the surface")) {
   constexpr int kSamples = 1000000;
+  std::vector<Vec2> us;
+  for (int i = 0; i < kSamples; ++i) us.push_back(Sampler(uint32_t(i), 0, testSeed(21)).next2D());
   DirectionHistogram histogram;
   int below = 0;
-  for (int i = 0; i < kSamples; ++i) {
-    Sampler sampler(uint32_t(i), 0, testSeed(21));
-    Vec3 w = sampleDiffuseDirection(sampler.next2D());
+  for (const Vec3& w : candidate::sampleDiffuseDirections(us)) {
     if (!(w.z >= 0.0f)) ++below;
     histogram.add(w);
   }
   CHECK(below == 0);
   CHECK(histogram.outside == 0);  // not unit length
-  auto pdf = [](const Vec3& w) { return double(diffuseDirectionPdf(w)); };
-  std::vector<double> expected = DirectionHistogram::expected(pdf, kSamples);
+  std::vector<double> expected = DirectionHistogram::expected(&candidate::diffuseDirectionPdfs, kSamples);
   double integral = 0.0;
   for (double e : expected) integral += e / kSamples;
   INFO("integral of the pdf over the sphere: " << integral);
   CHECK(integral == doctest::Approx(1.0).epsilon(0.01));
-  CHECK(diffuseDirectionPdf(Vec3(0, 0.6f, -0.8f)) == 0.0f);
+  CHECK(candidate::diffuseDirectionPdf(Vec3(0, 0.6f, -0.8f)) == 0.0f);
   ChiSquareResult r = chiSquareTest(histogram.counts, expected);
   INFO("chi-square " << r.statistic << " with " << r.degreesOfFreedom << " dof: p = " << r.pValue << " "
                      << r.failure);
@@ -92,21 +90,21 @@ TEST_CASE("T5.1 diffuse sampling: f cos(theta) / pdf averages to the albedo (ene
   Hit hit;
   hit.geometricNormal = hit.shadingNormal = glm::normalize(Vec3(0.2f, 0.9f, -0.3f));
   const Vec3 wo = glm::normalize(Vec3(0.5f, 1.0f, 0.1f));
-  const Bsdf bsdf(scene.materials[0], hit, wo);
+  const Bsdf bsdf(scene.materials[0], hit, wo);  // the judge's, for its normal only
+  std::vector<Vec2> us;
+  for (int i = 0; i < 100000; ++i) us.push_back(Sampler(uint32_t(i), 0, testSeed(22)).next2D());
   MeanEstimate weight;
-  for (int i = 0; i < 100000; ++i) {
-    Sampler sampler(uint32_t(i), 0, testSeed(22));
-    auto s = bsdf.sample(wo, sampler.next2D());
+  for (const std::optional<BsdfSample>& s : candidate::bsdfSamples(scene.materials[0], hit, wo, us)) {
     REQUIRE(s.has_value());
     weight.add(s->f.y * std::abs(glm::dot(s->wi, bsdf.normal())) / s->pdf);
   }
   INFO(weight.describe(0.7));
   CHECK(weight.agrees(0.7));
   for (Vec2 u : {Vec2(0.0f), Vec2(0.99999994f), Vec2(0.99999994f, 0.0f), Vec2(0.0f, 0.99999994f)}) {
-    Vec3 w = sampleDiffuseDirection(u);
+    Vec3 w = candidate::sampleDiffuseDirection(u);
     CHECK(finite(w));
     CHECK(w.z >= 0.0f);
-    CHECK(std::isfinite(diffuseDirectionPdf(w)));
+    CHECK(std::isfinite(candidate::diffuseDirectionPdf(w)));
   }
 }
 
@@ -152,13 +150,14 @@ TEST_CASE("T5.2 path tracing: white furnace — an albedo-1 sphere in a uniform 
     Rig rig(std::move(scene));
     TraceContext context = rig.context(8, 1, true);
     Random random(23);
-    MeanEstimate m2;
+    std::vector<calls::PathQuery> queries;
     for (int i = 0; i < 20000; ++i) {
       DVec3 target = random.inCube(0.5);
       Point3 origin(0.0f, 0.0f, 4.0f);
-      Sampler sampler(uint32_t(i), 0, testSeed(23));
-      m2.add(tracePath(context, Ray{origin, Vec3(glm::normalize(target - DVec3(origin)))}, sampler).y);
+      queries.emplace_back(Ray{origin, Vec3(glm::normalize(target - DVec3(origin)))}, uint32_t(i), testSeed(23));
     }
+    MeanEstimate m2;
+    for (const Color& L : candidate::tracePaths(context, queries)) m2.add(L.y);
     const double expected = albedo == 1.0f ? 1.0 : 0.5 * 0.8;  // every ray here hits the sphere
     CAPTURE(albedo);
     INFO(m2.describe(expected));
@@ -205,14 +204,16 @@ TEST_CASE("T5.2 path tracing: no NaN or Inf in the Cornell box, at grazing angle
   Rig rig(defaultScene());
   TraceContext context = rig.context(8, 1, true);
   Random random(41);
-  int bad = 0, bright = 0;
+  std::vector<calls::PathQuery> queries;
   for (int i = 0; i < 20000; ++i) {
     // From inside the box, including rays skimming the walls.
     Point3 origin(float(random.uniform(-0.99, 0.99)), float(random.uniform(0.01, 1.49)), float(random.uniform(-0.99, 0.99)));
     DVec3 d = random.unitVector();
     if (i % 4 == 0) d.y = 1e-4 * d.y;  // nearly parallel to the floor and ceiling
-    Sampler sampler(uint32_t(i), 0, testSeed(41));
-    Color L = tracePath(context, Ray{origin, Vec3(glm::normalize(d))}, sampler);
+    queries.emplace_back(Ray{origin, Vec3(glm::normalize(d))}, uint32_t(i), testSeed(41));
+  }
+  int bad = 0, bright = 0;
+  for (const Color& L : candidate::tracePaths(context, queries)) {
     if (!finite(L)) ++bad;
     if (maxComponent(L) > 0.0f) ++bright;
   }

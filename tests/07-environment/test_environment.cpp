@@ -2,15 +2,16 @@
 // environment samplers: a single lit pixel, a constant 100x100 map and a
 // constant 3x2 map, tested with chi-square (alpha = 1e-4, its false-failure
 // rate) over the sphere; plus exact identities (pdf integral, seam, poles).
+// candidate::f(...) is the student's f, computed in the candidate process
+// (calls.h); directions and expected values are made here, in the judge.
 #include <doctest/doctest.h>
 
 #include <cmath>
 
 #include "check.h"
 #include "grading.h"
-#include "pathlab/lights.h"
 #include "pathlab/random.h"
-#include "pathlab/tasks/environment.h"
+#include "calls.h"
 #include "statistics.h"
 
 using namespace pathlab;
@@ -20,13 +21,29 @@ namespace {
 
 Image constantMap(int width, int height, float value = 1.0f) { return Image(width, height, Color(value)); }
 
+// The direction of equirectangular (u, v), in double (the judge's own, so
+// T7.2 and T7.5 do not depend on the student's T7.1).
+Vec3 directionAt(Point2 uv) {
+  const double phi = 2.0 * M_PI * uv.x, theta = M_PI * uv.y;
+  return Vec3(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)), float(std::sin(theta) * std::sin(phi)));
+}
+Point2 uvOf(const Vec3& w) {
+  double phi = std::atan2(double(w.z), double(w.x));
+  if (phi < 0.0) phi += 2.0 * M_PI;
+  return Point2(float(phi / (2.0 * M_PI)), float(std::acos(std::clamp(double(w.y), -1.0, 1.0)) / M_PI));
+}
+
+std::vector<Vec2> uniformPoints(int n, uint64_t seed) {
+  std::vector<Vec2> us;
+  for (int i = 0; i < n; ++i) us.push_back(Sampler(uint32_t(i), 0, testSeed(seed)).next2D());
+  return us;
+}
+
 // Chi-square of sampleEnvironment against environmentPdf over the sphere.
 ChiSquareResult chiSquare(const EnvironmentDistribution& d, int samples, uint64_t seed, int* failed) {
   DirectionHistogram histogram;
   *failed = 0;
-  for (int i = 0; i < samples; ++i) {
-    Sampler sampler(uint32_t(i), 0, testSeed(seed));
-    auto s = sampleEnvironment(d, sampler.next2D());
+  for (const auto& s : candidate::sampleEnvironment(d, uniformPoints(samples, seed))) {
     if (!s) {
       ++*failed;
       continue;
@@ -34,20 +51,30 @@ ChiSquareResult chiSquare(const EnvironmentDistribution& d, int samples, uint64_
     // The histogram is over (phi, cos) of its own axes: use z as the pole.
     histogram.add(Vec3(s->direction.x, s->direction.z, s->direction.y));
   }
-  auto pdf = [&](const Vec3& w) { return double(environmentPdf(d, Vec3(w.x, w.z, w.y))); };
-  return chiSquareTest(histogram.counts, DirectionHistogram::expected(pdf, samples - *failed, 32));
+  auto pdfs = [&](const std::vector<Vec3>& ws) {
+    std::vector<Vec3> swapped;
+    for (const Vec3& w : ws) swapped.emplace_back(w.x, w.z, w.y);
+    const std::vector<float> p = candidate::environmentPdf(d, swapped);
+    return std::vector<double>(p.begin(), p.end());
+  };
+  return chiSquareTest(histogram.counts, DirectionHistogram::expected(pdfs, samples - *failed, 32));
 }
 
 // Integral of environmentPdf over the sphere (midpoint rule, fine grid).
 double pdfIntegral(const EnvironmentDistribution& d) {
   constexpr int kTheta = 400, kPhi = 800;
-  double sum = 0.0;
+  std::vector<Vec3> directions;
+  std::vector<double> weights;
   for (int j = 0; j < kTheta; ++j)
     for (int i = 0; i < kPhi; ++i) {
       const double theta = M_PI * (j + 0.5) / kTheta, phi = 2 * M_PI * (i + 0.5) / kPhi;
-      Vec3 w(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)), float(std::sin(theta) * std::sin(phi)));
-      sum += double(environmentPdf(d, w)) * std::sin(theta) * (M_PI / kTheta) * (2 * M_PI / kPhi);
+      directions.emplace_back(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
+                              float(std::sin(theta) * std::sin(phi)));
+      weights.push_back(std::sin(theta) * (M_PI / kTheta) * (2 * M_PI / kPhi));
     }
+  const std::vector<float> pdfs = candidate::environmentPdf(d, directions);
+  double sum = 0.0;
+  for (size_t k = 0; k < pdfs.size(); ++k) sum += double(pdfs[k]) * weights[k];
   return sum;
 }
 
@@ -56,22 +83,22 @@ double pdfIntegral(const EnvironmentDistribution& d) {
 TEST_CASE("T7.1 equirect: directions and (u, v) are inverse, y is up, v = 0 at the zenith" *
           grading(2, "theta = acos(y), phi = atan2(z, x) in [0, 2 pi), u = phi / 2pi, v = theta / pi; and back "
                      "(sin theta cos phi, cos theta, sin theta sin phi)")) {
-  CHECK(directionToEquirect(Vec3(0, 1, 0)).y == doctest::Approx(0.0f));
-  CHECK(directionToEquirect(Vec3(0, -1, 0)).y == doctest::Approx(1.0f));
-  CHECK(directionToEquirect(Vec3(1, 0, 0)).x == doctest::Approx(0.0f));
-  CHECK(directionToEquirect(Vec3(0, 0, 1)).x == doctest::Approx(0.25f));
-  CHECK(directionToEquirect(Vec3(-1, 0, 0)).x == doctest::Approx(0.5f));
+  CHECK(candidate::directionToEquirect(Vec3(0, 1, 0)).y == doctest::Approx(0.0f));
+  CHECK(candidate::directionToEquirect(Vec3(0, -1, 0)).y == doctest::Approx(1.0f));
+  CHECK(candidate::directionToEquirect(Vec3(1, 0, 0)).x == doctest::Approx(0.0f));
+  CHECK(candidate::directionToEquirect(Vec3(0, 0, 1)).x == doctest::Approx(0.25f));
+  CHECK(candidate::directionToEquirect(Vec3(-1, 0, 0)).x == doctest::Approx(0.5f));
   Random random(71);
   for (int i = 0; i < 2000; ++i) {
     Vec3 w(random.unitVector());
-    Point2 uv = directionToEquirect(w);
+    Point2 uv = candidate::directionToEquirect(w);
     CHECK(uv.x >= 0.0f);
     CHECK(uv.x < 1.0f);
     CHECK(uv.y >= 0.0f);
     CHECK(uv.y <= 1.0f);
-    CHECK(near(equirectToDirection(uv), w, 2e-4f));
+    CHECK(near(candidate::equirectToDirection(uv), w, 2e-4f));
   }
-  CHECK(finite(equirectToDirection(directionToEquirect(Vec3(0, 1.0000001f, 0)))));  // |y| > 1 by rounding
+  CHECK(finite(candidate::equirectToDirection(candidate::directionToEquirect(Vec3(0, 1.0000001f, 0)))));  // |y| > 1 by rounding
 }
 
 TEST_CASE("T7.2 lookup: bilinear between pixel centres, continuous across the u seam, clamped at the poles" *
@@ -81,19 +108,19 @@ TEST_CASE("T7.2 lookup: bilinear between pixel centres, continuous across the u 
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 8; ++i) map.at(i, j) = Color(float(i), float(j), float(i * 10 + j));
   // At a pixel centre: exactly that pixel.
-  CHECK(near(lookupEnvironment(map, equirectToDirection({2.5f / 8, 1.5f / 4})), Color(2, 1, 21), 1e-4f));
+  CHECK(near(candidate::lookupEnvironment(map, directionAt({2.5f / 8, 1.5f / 4})), Color(2, 1, 21), 1e-4f));
   // Halfway between two centres: the average.
-  CHECK(near(lookupEnvironment(map, equirectToDirection({3.0f / 8, 1.5f / 4})), Color(2.5f, 1, 26), 1e-3f));
+  CHECK(near(candidate::lookupEnvironment(map, directionAt({3.0f / 8, 1.5f / 4})), Color(2.5f, 1, 26), 1e-3f));
   // The seam: u = 0 is halfway between the last column (7) and the first (0).
-  Color seam = lookupEnvironment(map, equirectToDirection({0.0f, 2.5f / 4}));
+  Color seam = candidate::lookupEnvironment(map, directionAt({0.0f, 2.5f / 4}));
   INFO("at the seam " << str(seam));
   CHECK(near(seam, Color(3.5f, 2, 37), 1e-3f));
   // Just either side of the seam the values agree (continuity).
-  Color left = lookupEnvironment(map, equirectToDirection({0.999999f, 2.5f / 4}));
-  Color right = lookupEnvironment(map, equirectToDirection({0.000001f, 2.5f / 4}));
+  Color left = candidate::lookupEnvironment(map, directionAt({0.999999f, 2.5f / 4}));
+  Color right = candidate::lookupEnvironment(map, directionAt({0.000001f, 2.5f / 4}));
   CHECK(near(left, right, 5e-3f));
   // The poles: finite, the first and last rows.
-  Color top = lookupEnvironment(map, Vec3(0, 1, 0)), bottom = lookupEnvironment(map, Vec3(0, -1, 0));
+  Color top = candidate::lookupEnvironment(map, Vec3(0, 1, 0)), bottom = candidate::lookupEnvironment(map, Vec3(0, -1, 0));
   CHECK(finite(top));
   CHECK(finite(bottom));
   CHECK(top.y == doctest::Approx(0.0f));
@@ -104,12 +131,9 @@ TEST_CASE("T7.3 uniform sphere: directions cover the sphere evenly (chi-square, 
           grading(2, "z = 1 - 2 u.x is uniform in [-1, 1] (equal heights, equal areas); phi = 2 pi u.y")) {
   constexpr int kSamples = 1000000;
   DirectionHistogram histogram;
-  for (int i = 0; i < kSamples; ++i) {
-    Sampler sampler(uint32_t(i), 0, testSeed(72));
-    histogram.add(sampleUniformSphere(sampler.next2D()));
-  }
+  for (const Vec3& w : candidate::sampleUniformSphere(uniformPoints(kSamples, 72))) histogram.add(w);
   CHECK(histogram.outside == 0);
-  auto pdf = [](const Vec3&) { return 1.0 / (4.0 * M_PI); };
+  auto pdf = [](const std::vector<Vec3>& ws) { return std::vector<double>(ws.size(), 1.0 / (4.0 * M_PI)); };
   ChiSquareResult r = chiSquareTest(histogram.counts, DirectionHistogram::expected(pdf, kSamples));
   INFO("chi-square " << r.statistic << ", dof " << r.degreesOfFreedom << ", p = " << r.pValue << " " << r.failure);
   CHECK(r.failure.empty());
@@ -122,7 +146,7 @@ TEST_CASE("T7.4 distribution: CDFs from luminance x sin(theta); the pdf integrat
   Random random(73);
   Image map(32, 16);
   for (Color& c : map.pixels) c = Color(float(random.uniform(0, 2)), float(random.uniform(0, 1)), float(random.uniform(0, 3)));
-  EnvironmentDistribution d = buildEnvironmentDistribution(map);
+  EnvironmentDistribution d = candidate::buildEnvironmentDistribution(map);
   REQUIRE(d.marginalCdf.size() == 17);
   REQUIRE(d.conditionalCdf.size() == 16 * 33);
   CHECK(d.marginalCdf.front() == 0.0f);
@@ -140,7 +164,7 @@ TEST_CASE("T7.4 distribution: CDFs from luminance x sin(theta); the pdf integrat
     CHECK(d.marginalCdf[size_t(j) + 1] - d.marginalCdf[size_t(j)] == doctest::Approx(rows[size_t(j)] / total).epsilon(1e-4));
   }
   for (const Image& m : {map, constantMap(100, 100), constantMap(3, 2)}) {
-    const double integral = pdfIntegral(buildEnvironmentDistribution(m));
+    const double integral = pdfIntegral(candidate::buildEnvironmentDistribution(m));
     CAPTURE(m.width);
     CHECK(integral == doctest::Approx(1.0).epsilon(2e-3));
   }
@@ -156,7 +180,7 @@ TEST_CASE("T7.5 importance sampling: samples follow the pdf on Mitsuba's maps (o
   Image single(20, 10);
   single.at(13, 3) = Color(50.0f);
   for (const Image& m : {single, constantMap(100, 100), constantMap(3, 2), noisy}) {
-    EnvironmentDistribution d = buildEnvironmentDistribution(m);
+    EnvironmentDistribution d = candidate::buildEnvironmentDistribution(m);
     int failed = 0;
     ChiSquareResult r = chiSquare(d, 500000, 74 + uint64_t(m.width), &failed);
     CAPTURE(m.width);
@@ -174,32 +198,32 @@ TEST_CASE("T7.5 importance sampling: a single hot pixel — every sample lands i
                      "L times solid angle; the sample's pdf must equal environmentPdf of its direction")) {
   Image map(32, 16);
   map.at(21, 5) = Color(100.0f);
-  const EnvironmentDistribution d = buildEnvironmentDistribution(map);
-  Environment environment;
-  environment.image = map;
-  const EnvironmentLight light(environment, EnvironmentSampling::Importance);
+  const EnvironmentDistribution d = candidate::buildEnvironmentDistribution(map);
   // The pixel's solid angle times its radiance is the exact total.
   const double theta0 = M_PI * 5 / 16, theta1 = M_PI * 6 / 16;
   const double pixelSolidAngle = (2 * M_PI / 32) * (std::cos(theta0) - std::cos(theta1));
   double lo = 1e30, hi = 0.0;
   MeanEstimate weight;
   int outside = 0, inconsistent = 0;
-  for (int i = 0; i < 20000; ++i) {
-    Sampler sampler(uint32_t(i), 0, testSeed(75));
-    auto s = sampleEnvironment(d, sampler.next2D());
+  const std::vector<std::optional<EnvironmentSample>> samples = candidate::sampleEnvironment(d, uniformPoints(20000, 75));
+  std::vector<Vec3> directions;
+  for (const auto& s : samples) {
     REQUIRE(s.has_value());
+    directions.push_back(s->direction);
+  }
+  const std::vector<float> pdfs = candidate::environmentPdf(d, directions);
+  for (size_t i = 0; i < samples.size(); ++i) {
+    const EnvironmentSample& s = *samples[i];
     // A sample on a pixel's very edge can round into the neighbour on the way
     // direction -> (u, v): judge those with a margin of 1e-4.
-    Point2 uv = directionToEquirect(s->direction);
+    Point2 uv = uvOf(s.direction);
     const float x = uv.x * 32.0f, y = uv.y * 16.0f;
     const bool onEdge = std::abs(x - std::round(x)) < 1e-4f * 32 || std::abs(y - std::round(y)) < 1e-4f * 16;
     if ((int(x) != 21 || int(y) != 5) && !onEdge) ++outside;
-    const double w = 100.0 / double(s->pdfSolidAngle);
+    const double w = 100.0 / double(s.pdfSolidAngle);
     lo = std::min(lo, w), hi = std::max(hi, w);
     weight.add(w);
-    if (!onEdge && std::abs(s->pdfSolidAngle - environmentPdf(d, s->direction)) > 1e-3f * s->pdfSolidAngle) {
-      ++inconsistent;
-    }
+    if (!onEdge && std::abs(s.pdfSolidAngle - pdfs[i]) > 1e-3f * s.pdfSolidAngle) ++inconsistent;
   }
   // Within the pixel sin(theta) ranges over [sin(theta0), sin(theta1)]: the
   // weight L / pdf = L * 2 pi^2 sin(theta) / p(u, v) spans the same ratio.
@@ -212,27 +236,21 @@ TEST_CASE("T7.5 importance sampling: a single hot pixel — every sample lands i
   CHECK(weight.agrees(100.0 * pixelSolidAngle));
   // The sample's pdf is the one environmentPdf gives for its direction.
   CHECK(inconsistent == 0);
-  (void)light;
 }
 
 TEST_CASE("T7.5 importance sampling: an all-black map gives no samples and no NaN; pole rows stay finite" *
           grading(2, "a zero total weight means nothing to sample: return nothing, never divide by 0; a sample "
                      "exactly at a pole (sin(theta) = 0) returns nothing too")) {
-  EnvironmentDistribution black = buildEnvironmentDistribution(Image(16, 8));
+  EnvironmentDistribution black = candidate::buildEnvironmentDistribution(Image(16, 8));
   CHECK(black.totalWeight == 0.0);
-  for (int i = 0; i < 100; ++i) {
-    Sampler sampler(uint32_t(i), 0, testSeed(76));
-    CHECK_FALSE(sampleEnvironment(black, sampler.next2D()).has_value());
-  }
-  CHECK(environmentPdf(black, Vec3(0, 1, 0)) == 0.0f);
+  for (const auto& s : candidate::sampleEnvironment(black, uniformPoints(100, 76))) CHECK_FALSE(s.has_value());
+  CHECK(candidate::environmentPdf(black, Vec3(0, 1, 0)) == 0.0f);
   // Light only in the pole rows: samples and pdfs stay finite.
   Image poles(16, 8);
   for (int i = 0; i < 16; ++i) poles.at(i, 0) = poles.at(i, 7) = Color(5.0f);
-  EnvironmentDistribution d = buildEnvironmentDistribution(poles);
+  EnvironmentDistribution d = candidate::buildEnvironmentDistribution(poles);
   int finiteSamples = 0;
-  for (int i = 0; i < 20000; ++i) {
-    Sampler sampler(uint32_t(i), 0, testSeed(77));
-    auto s = sampleEnvironment(d, sampler.next2D());
+  for (const auto& s : candidate::sampleEnvironment(d, uniformPoints(20000, 77))) {
     if (!s) continue;
     REQUIRE(finite(s->direction));
     REQUIRE(std::isfinite(s->pdfSolidAngle));
@@ -240,7 +258,7 @@ TEST_CASE("T7.5 importance sampling: an all-black map gives no samples and no Na
     ++finiteSamples;
   }
   CHECK(finiteSamples > 19990);
-  CHECK(std::isfinite(environmentPdf(d, Vec3(0, 1, 0))));
-  CHECK(std::isfinite(environmentPdf(d, Vec3(0, -1, 0))));
+  CHECK(std::isfinite(candidate::environmentPdf(d, Vec3(0, 1, 0))));
+  CHECK(std::isfinite(candidate::environmentPdf(d, Vec3(0, -1, 0))));
   CHECK(pdfIntegral(d) == doctest::Approx(1.0).epsilon(5e-3));
 }

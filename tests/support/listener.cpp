@@ -1,5 +1,12 @@
 // Prints a hint under each failing test case and the points scored, parsed
-// from the "points=N; hint=..." description that grading() attaches.
+// from the "points=N; hint=..." description that grading() attaches. Under
+// a failing test it also shows what the candidate printed (task code's own
+// output), line by line behind "candidate| ".
+//
+// With PATHLAB_VERDICT_FILE set (tools/grade does), each test case's
+// verdict is also appended to that file: "PASS|FAIL <points> <name>", then
+// "END" when the run finished. The grader reads only this file, which the
+// candidate cannot reach, never the judge's stdout.
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
@@ -7,6 +14,7 @@
 #include <string>
 
 #include "grading.h"
+#include "../remote/call.h"
 
 namespace pathlab::test {
 
@@ -51,7 +59,10 @@ struct GradingListener : doctest::IReporter {
     }
   }
   void test_run_start() override {}
-  void test_case_start(const doctest::TestCaseData& data) override { current_ = &data; }
+  void test_case_start(const doctest::TestCaseData& data) override {
+    current_ = &data;
+    remote::takeCandidateOutput();  // output of earlier tests is not this test's
+  }
   void test_case_reenter(const doctest::TestCaseData&) override {}
   void test_case_end(const doctest::CurrentTestCaseStats& stats) override {
     const int points = pointsOf(current_->m_description);
@@ -62,6 +73,30 @@ struct GradingListener : doctest::IReporter {
       ++passed_;
     } else {
       std::printf("HINT (%s, %d pts): %s\n", current_->m_name, points, hintOf(current_->m_description).c_str());
+      printCandidateOutput();
+    }
+    verdict(std::string(stats.testCaseSuccess ? "PASS " : "FAIL ") + std::to_string(points) + " " + current_->m_name);
+  }
+
+  static void printCandidateOutput() {
+    const std::string output = remote::takeCandidateOutput();
+    if (output.empty()) return;
+    std::printf("The task's code printed:\n");
+    size_t start = 0;
+    while (start < output.size()) {
+      size_t end = output.find('\n', start);
+      if (end == std::string::npos) end = output.size();
+      std::printf("candidate| %s\n", output.substr(start, end - start).c_str());
+      start = end + 1;
+    }
+  }
+
+  static void verdict(const std::string& line) {
+    static const char* path = std::getenv("PATHLAB_VERDICT_FILE");
+    if (!path || !*path) return;
+    if (std::FILE* f = std::fopen(path, "a")) {
+      std::fprintf(f, "%s\n", line.c_str());
+      std::fclose(f);
     }
   }
   void test_case_exception(const doctest::TestCaseException&) override {}
@@ -73,6 +108,7 @@ struct GradingListener : doctest::IReporter {
   void test_run_end(const doctest::TestRunStats&) override {
     if (cases_ > 0) std::printf("SCORE %d/%d points (%d/%d test cases passed)\n", earned_, total_, passed_, cases_);
     std::fflush(stdout);
+    verdict("END");
   }
 
   const doctest::TestCaseData* current_ = nullptr;

@@ -147,27 +147,42 @@ struct DirectionHistogram {
     counts[size_t(j * kPhi + i)] += 1.0;
   }
 
+  // The solid-angle pdf at many directions at once (a remote call evaluates
+  // the student's pdf for all of them in one message).
+  using PdfBatch = std::function<std::vector<double>(const std::vector<Vec3>&)>;
+
   // kSub = 32 for piecewise-constant pdfs (environment maps), as Mitsuba does.
-  static std::vector<double> expected(const std::function<double(const Vec3&)>& pdf, double samples, int kSub = 8) {
-    std::vector<double> result(kPhi * kCos, 0.0);
+  static std::vector<double> expected(const PdfBatch& pdfs, double samples, int kSub = 8) {
     const double dPhi = 2.0 * M_PI / kPhi, dCos = 2.0 / kCos;
+    // Every midpoint of every cell's sub-grid, cell by cell, and its sin(theta).
+    std::vector<Vec3> directions;
+    std::vector<double> sines, dThetas;
+    directions.reserve(size_t(kPhi) * kCos * kSub * kSub);
     for (int j = 0; j < kCos; ++j) {
       // The cell's z range [z0, z1] is the theta range [acos(z1), acos(z0)].
       const double theta0 = std::acos(std::min(1.0, -1.0 + (j + 1) * dCos));
       const double theta1 = std::acos(std::max(-1.0, -1.0 + j * dCos));
       const double dTheta = (theta1 - theta0) / kSub;
-      for (int i = 0; i < kPhi; ++i) {
-        double integral = 0.0;
+      dThetas.push_back(dTheta);
+      for (int i = 0; i < kPhi; ++i)
         for (int sj = 0; sj < kSub; ++sj)
           for (int si = 0; si < kSub; ++si) {
             const double phi = -M_PI + (i + (si + 0.5) / kSub) * dPhi;
             const double theta = theta0 + (sj + 0.5) * dTheta;
             const double r = std::sin(theta);
-            integral += pdf(Vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(std::cos(theta)))) * r;
+            directions.emplace_back(float(r * std::cos(phi)), float(r * std::sin(phi)), float(std::cos(theta)));
+            sines.push_back(r);
           }
-        result[size_t(j * kPhi + i)] = samples * integral * (dPhi / kSub) * dTheta;
-      }
     }
+    const std::vector<double> pdf = pdfs(directions);
+    std::vector<double> result(kPhi * kCos, 0.0);
+    size_t k = 0;
+    for (int j = 0; j < kCos; ++j)
+      for (int i = 0; i < kPhi; ++i) {
+        double integral = 0.0;
+        for (int s = 0; s < kSub * kSub; ++s, ++k) integral += pdf[k] * sines[k];
+        result[size_t(j * kPhi + i)] = samples * integral * (dPhi / kSub) * dThetas[size_t(j)];
+      }
     return result;
   }
 };

@@ -1,0 +1,46 @@
+// Task 2's remote calls: the judge's view of the student's intersection.cpp.
+#pragma once
+
+#include <vector>
+
+#include "../remote/call.h"
+#include "pathlab/scene.h"
+#include "pathlab/tasks/intersection.h"
+
+namespace pathlab::calls {
+PATHLAB_REMOTE_CALL(IntersectTriangle, 1, std::optional<TriangleHit>(Ray, Interval, Point3, Point3, Point3));
+PATHLAB_REMOTE_CALL(IntersectSphere, 2, std::optional<float>(Ray, Interval, Point3, float));
+// normals: empty, or the three vertex normals.
+PATHLAB_REMOTE_CALL(TriangleSurfacePoint, 3, SurfacePoint(TriangleHit, Point3, Point3, Point3, std::vector<Vec3>));
+PATHLAB_REMOTE_CALL(SphereSurfacePoint, 4, SurfacePoint(Ray, float, Point3, float));
+// For each ray, the t of every triangle of a mesh it hits (intersectTriangle
+// on each triangle, in the candidate: a closed mesh has thousands).
+PATHLAB_REMOTE_CALL(MeshHits, 5,
+                    std::vector<std::vector<float>>(std::vector<Point3>, std::vector<glm::uvec3>, std::vector<Ray>));
+}  // namespace pathlab::calls
+
+namespace pathlab::candidate {
+inline std::optional<TriangleHit> intersectTriangle(const Ray& ray, Interval range, const Point3& p0, const Point3& p1,
+                                                    const Point3& p2) {
+  return remote::call<calls::IntersectTriangle>(ray, range, p0, p1, p2);
+}
+// Many triangle tests in one message.
+inline std::vector<std::optional<TriangleHit>> intersectTriangles(const std::vector<calls::IntersectTriangle::Args>& tests) {
+  return remote::callMany<calls::IntersectTriangle>(tests);
+}
+// The t of every triangle of `mesh` that each ray hits (range: all t > 0).
+inline std::vector<std::vector<float>> meshHits(const TriangleMesh& mesh, const std::vector<Ray>& rays) {
+  return remote::call<calls::MeshHits>(mesh.positions, mesh.triangles, rays);
+}
+inline std::optional<float> intersectSphere(const Ray& ray, Interval range, const Point3& center, float radius) {
+  return remote::call<calls::IntersectSphere>(ray, range, center, radius);
+}
+inline SurfacePoint triangleSurfacePoint(const TriangleHit& hit, const Point3& p0, const Point3& p1, const Point3& p2,
+                                         const Vec3* normals) {
+  return remote::call<calls::TriangleSurfacePoint>(hit, p0, p1, p2,
+                                                   normals ? std::vector<Vec3>(normals, normals + 3) : std::vector<Vec3>{});
+}
+inline SurfacePoint sphereSurfacePoint(const Ray& ray, float t, const Point3& center, float radius) {
+  return remote::call<calls::SphereSurfacePoint>(ray, t, center, radius);
+}
+}  // namespace pathlab::candidate

@@ -1,0 +1,28 @@
+// The candidate's side of task 2's calls: the linked intersection.cpp.
+#include "../remote/server.h"
+#include "calls.h"
+
+namespace pathlab::remote {
+
+void registerCalls(Server& server) {
+  server.serve<calls::IntersectTriangle>(&intersectTriangle);
+  server.serve<calls::IntersectSphere>(&intersectSphere);
+  server.serve<calls::TriangleSurfacePoint>(
+      [](const TriangleHit& hit, const Point3& p0, const Point3& p1, const Point3& p2, const std::vector<Vec3>& normals) {
+        return triangleSurfacePoint(hit, p0, p1, p2, normals.size() == 3 ? normals.data() : nullptr);
+      });
+  server.serve<calls::SphereSurfacePoint>(&sphereSurfacePoint);
+  server.serve<calls::MeshHits>(
+      [](const std::vector<Point3>& positions, const std::vector<glm::uvec3>& triangles, const std::vector<Ray>& rays) {
+        std::vector<std::vector<float>> hits(rays.size());
+        for (size_t r = 0; r < rays.size(); ++r) {
+          for (const glm::uvec3& t : triangles) {
+            auto hit = intersectTriangle(rays[r], Interval{}, positions.at(t.x), positions.at(t.y), positions.at(t.z));
+            if (hit) hits[r].push_back(hit->t);
+          }
+        }
+        return hits;
+      });
+}
+
+}  // namespace pathlab::remote

@@ -1,0 +1,33 @@
+// The candidate's side of task 3's calls: the linked bvh.cpp.
+#include "../remote/server.h"
+#include "calls.h"
+
+namespace pathlab::remote {
+
+void registerCalls(Server& server) {
+  server.serve<calls::IntersectBox>(&intersectBox);
+  server.serve<calls::BuildBvh>([](const std::vector<Aabb>& bounds) { return buildBvh(bounds); });
+  server.serve<calls::IntersectClosest>(
+      [](const Bvh& bvh, const Scene& scene, const std::vector<calls::RayInRange>& rays) {
+        const LeafGeometry geometry(scene, bvh.primitives);
+        std::vector<calls::ClosestResult> results;
+        for (const auto& [ray, range] : rays) {
+          TraversalStats stats;
+          auto hit = intersectClosest(bvh, geometry, ray, range, &stats);
+          results.emplace_back(hit, stats);
+        }
+        return results;
+      });
+  server.serve<calls::IntersectAny>([](const Bvh& bvh, const Scene& scene, const std::vector<calls::RayInRange>& rays) {
+    const LeafGeometry geometry(scene, bvh.primitives);
+    std::vector<calls::AnyResult> results;
+    for (const auto& [ray, range] : rays) {
+      TraversalStats stats;
+      const bool blocked = intersectAny(bvh, geometry, ray, range, &stats);
+      results.emplace_back(blocked, stats);
+    }
+    return results;
+  });
+}
+
+}  // namespace pathlab::remote

@@ -1,0 +1,24 @@
+// Task 4's remote calls: the judge's view of the student's direct_lighting.cpp.
+// estimateDirectLighting runs in the candidate over a scene the judge sends
+// (../remote/trace_calls.h).
+#pragma once
+
+#include "../remote/call.h"
+#include "../remote/trace_calls.h"
+#include "pathlab/tasks/direct_lighting.h"
+
+namespace pathlab::calls {
+PATHLAB_REMOTE_CALL(LambertianBrdf, 1, Color(Color));
+PATHLAB_REMOTE_CALL(OffsetRayOrigin, 2, Point3(Point3, Vec3, Vec3));
+PATHLAB_REMOTE_CALL(LightDirectionTo, 3, std::optional<LightDirection>(Point3, AreaSample));
+}  // namespace pathlab::calls
+
+namespace pathlab::candidate {
+inline Color lambertianBrdf(const Color& albedo) { return remote::call<calls::LambertianBrdf>(albedo); }
+inline std::vector<Point3> offsetRayOrigins(const std::vector<calls::OffsetRayOrigin::Args>& queries) {
+  return remote::callMany<calls::OffsetRayOrigin>(queries);
+}
+inline std::optional<LightDirection> lightDirection(const Point3& from, const AreaSample& sample) {
+  return remote::call<calls::LightDirectionTo>(from, sample);
+}
+}  // namespace pathlab::candidate

@@ -1,0 +1,51 @@
+#!/usr/bin/env python3
+"""Every call a suite makes to its own task's functions goes to the
+candidate: the judge links the reference, so a plain intersectTriangle(...)
+in tests/02-intersection would test the reference, not the student. This
+check fails on any call of a task function in a suite's test files that is
+not written candidate::name(...) (comments and strings are ignored).
+
+usage: check_direct_calls.py TESTS_DIR FRAMEWORK_INCLUDE_DIR"""
+import re
+import sys
+from pathlib import Path
+
+SUITES = {"01-camera-rays": "camera_rays.h", "02-intersection": "intersection.h", "03-bvh": "bvh.h",
+          "04-direct-lighting": "direct_lighting.h", "05-path-tracing": "path_tracing.h",
+          "06-mirror-glass": "mirror_glass.h", "07-environment": "environment.h"}
+
+
+def code_only(text: str) -> str:
+    """The source with comments, string and character literals blanked out."""
+    pattern = re.compile(r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'', re.S)
+    return pattern.sub(lambda m: " " * len(m.group(0)), text)
+
+
+def task_functions(header: Path) -> set:
+    code = code_only(header.read_text())
+    # Declarations at namespace level: "Type name(" at the start of a line.
+    return set(re.findall(r"^[A-Za-z_][\w:<>, ]*?[\s*&]([a-z]\w*)\(", code, re.M))
+
+
+def main() -> int:
+    tests, include = Path(sys.argv[1]), Path(sys.argv[2])
+    problems = []
+    for suite, header in SUITES.items():
+        names = task_functions(include / "pathlab" / "tasks" / header)
+        if not names:
+            problems.append(f"{header}: found no function declarations (has its layout changed?)")
+        for source in sorted((tests / suite).glob("test_*.cpp")):
+            code = code_only(source.read_text())
+            for number, line in enumerate(code.splitlines(), 1):
+                for name in names:
+                    for m in re.finditer(rf"(?<![\w.>:])({name})\s*\(", line):
+                        problems.append(f"{source.relative_to(tests)}:{number}: {name}(...) runs the judge's "
+                                        f"reference; write candidate::{name}(...)")
+    for p in problems:
+        print(p)
+    print(f"{len(SUITES)} suites checked: {len(problems)} direct calls of task functions")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

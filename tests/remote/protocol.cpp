@@ -1,0 +1,59 @@
+#include "protocol.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace pathlab::remote {
+
+bool readAll(int fd, void* data, size_t size) {
+  char* at = static_cast<char*>(data);
+  size_t done = 0;
+  while (done < size) {
+    ssize_t n = ::read(fd, at + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw std::runtime_error(std::string("read failed: ") + std::strerror(errno));
+    if (n == 0) {
+      if (done == 0) return false;
+      throw std::runtime_error("the stream ended in the middle of a message");
+    }
+    done += size_t(n);
+  }
+  return true;
+}
+
+void writeAll(int fd, const void* data, size_t size) {
+  const char* at = static_cast<const char*>(data);
+  size_t done = 0;
+  while (done < size) {
+    ssize_t n = ::write(fd, at + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw std::runtime_error(std::string("write failed: ") + std::strerror(errno));
+    done += size_t(n);
+  }
+}
+
+void writeMessage(int fd, uint32_t magic, uint32_t value, const std::string& payload) {
+  Header header{magic, value, payload.size()};
+  writeAll(fd, &header, sizeof header);
+  writeAll(fd, payload.data(), payload.size());
+}
+
+bool readMessage(int fd, uint32_t magic, uint32_t& value, std::string& payload) {
+  Header header;
+  if (!readAll(fd, &header, sizeof header)) return false;
+  if (header.magic != magic) throw std::runtime_error("not a message of this protocol (bad magic number)");
+  if (header.size > kMaxMessageBytes) {
+    throw std::runtime_error("message of " + std::to_string(header.size) + " bytes is over the limit");
+  }
+  value = header.value;
+  payload.resize(header.size);
+  if (header.size > 0 && !readAll(fd, payload.data(), header.size)) {
+    throw std::runtime_error("the stream ended in the middle of a message");
+  }
+  return true;
+}
+
+}  // namespace pathlab::remote

@@ -1,0 +1,54 @@
+// How the judge and the candidate talk (docs/ta-guide.md, "Judge and
+// candidate"). The judge — the test suite — owns every input, expected value
+// and verdict, and never runs student code. The candidate is a separate
+// process built from the student's task file, the framework and the
+// reference for the other tasks; it only computes. The judge writes a
+// request on the candidate's file descriptor 3 and reads the answer on its
+// descriptor 4; the candidate's stdout and stderr are only shown, never
+// parsed.
+//
+//   request:  Header{kRequestMagic, call id, payload size}  payload
+//   response: Header{kResponseMagic, status, payload size}  payload
+//
+// A call is a batch: the payload is a count and that many argument tuples,
+// the answer that many results (calls.h in each suite's folder lists them).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace pathlab::remote {
+
+inline constexpr uint32_t kRequestMagic = 0x51455250;   // "PREQ"
+inline constexpr uint32_t kResponseMagic = 0x53455250;  // "PRES"
+inline constexpr int kRequestFd = 3;   // the candidate reads requests here
+inline constexpr int kResponseFd = 4;  // and writes its answers here
+// The largest message either side accepts (a 1e6-sample batch is ~30 MB).
+inline constexpr uint64_t kMaxMessageBytes = uint64_t(512) << 20;
+
+enum class Status : uint32_t {
+  Ok = 0,
+  Threw = 1,        // the task's code threw: the payload is the message
+  UnknownCall = 2,  // this candidate does not serve that call
+  BadRequest = 3,   // the request did not decode
+};
+
+struct Header {
+  uint32_t magic = 0;
+  uint32_t value = 0;  // the call id (request) or the Status (response)
+  uint64_t size = 0;
+};
+static_assert(sizeof(Header) == 16);
+
+// Whole-buffer reads and writes on a descriptor, retrying on EINTR. read
+// returns false on end of file before the first byte; both throw
+// std::runtime_error on errors and on a stream that ends mid-message.
+bool readAll(int fd, void* data, size_t size);
+void writeAll(int fd, const void* data, size_t size);
+
+// One framed message: header then payload. readMessage returns false at a
+// clean end of file and throws on a bad magic or an oversized payload.
+void writeMessage(int fd, uint32_t magic, uint32_t value, const std::string& payload);
+bool readMessage(int fd, uint32_t magic, uint32_t& value, std::string& payload);
+
+}  // namespace pathlab::remote

@@ -1,0 +1,50 @@
+// The candidate's side of trace_calls.h, for the suites that use them.
+#pragma once
+
+#include "../support/render_support.h"
+#include "pathlab/random.h"
+#include "pathlab/tasks/direct_lighting.h"
+#include "pathlab/tasks/path_tracing.h"
+#include "server.h"
+#include "trace_calls.h"
+
+namespace pathlab::remote {
+
+inline TraceContext contextFor(const test::Rig& rig, const calls::TraceSettings& settings) {
+  return rig.context(settings.maxDepth, settings.lightSamples, settings.russianRoulette);
+}
+
+inline void serveTraceCalls(Server& server) {
+  server.serve<calls::DirectLighting>(
+      [](const Scene& scene, const calls::TraceSettings& settings, const std::vector<calls::DirectQuery>& queries) {
+        const test::Rig rig(scene);
+        TraceContext context = contextFor(rig, settings);
+        std::vector<Color> estimates;
+        for (const auto& [hit, wo, pixel, seed] : queries) {
+          const Bsdf bsdf(rig.scene().materials.at(hit.material), hit, wo);
+          Sampler sampler(pixel, 0, seed);
+          estimates.push_back(estimateDirectLighting(context, hit, bsdf, wo, sampler));
+        }
+        return estimates;
+      });
+  server.serve<calls::TracePaths>(
+      [](const Scene& scene, const calls::TraceSettings& settings, const std::vector<calls::PathQuery>& queries) {
+        const test::Rig rig(scene);
+        TraceContext context = contextFor(rig, settings);
+        std::vector<Color> radiance;
+        for (const auto& [ray, pixel, seed] : queries) {
+          Sampler sampler(pixel, 0, seed);
+          radiance.push_back(tracePath(context, ray, sampler));
+        }
+        return radiance;
+      });
+  server.serve<calls::BsdfSamples>(
+      [](const Material& material, const Hit& hit, const Vec3& wo, const std::vector<Vec2>& us) {
+        const Bsdf bsdf(material, hit, wo);
+        std::vector<std::optional<BsdfSample>> samples;
+        for (const Vec2& u : us) samples.push_back(bsdf.sample(wo, u));
+        return samples;
+      });
+}
+
+}  // namespace pathlab::remote

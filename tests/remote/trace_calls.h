@@ -1,0 +1,62 @@
+// Remote calls that run the framework's estimators in the candidate, over a
+// scene the judge sends: direct lighting at given hits (task 4), paths along
+// given rays (tasks 5 and 6) and BSDF samples (tasks 4-6). The candidate
+// builds the scene's BVH and lights with its own linked code, and every
+// sample draws its random numbers from Sampler(pixel, 0, seed), as the
+// tests would in one process.
+#pragma once
+
+#include <tuple>
+#include <vector>
+
+#include "call.h"
+#include "pathlab/bsdf.h"
+#include "pathlab/scene.h"
+#include "pathlab/trace.h"
+
+namespace pathlab::calls {
+
+// What an estimator reads from its TraceContext besides the scene.
+struct TraceSettings {
+  int lightSamples = 1;
+  int maxDepth = 4;
+  bool russianRoulette = true;
+};
+// One estimate: where, towards where, and its random stream.
+using DirectQuery = std::tuple<Hit, Vec3 /*wo*/, uint32_t /*pixel*/, uint64_t /*seed*/>;
+using PathQuery = std::tuple<Ray, uint32_t /*pixel*/, uint64_t /*seed*/>;
+
+PATHLAB_REMOTE_CALL(DirectLighting, 101, std::vector<Color>(Scene, TraceSettings, std::vector<DirectQuery>));
+PATHLAB_REMOTE_CALL(TracePaths, 102, std::vector<Color>(Scene, TraceSettings, std::vector<PathQuery>));
+// Bsdf(material, hit, wo).sample(wo, u) for each u.
+PATHLAB_REMOTE_CALL(BsdfSamples, 103, std::vector<std::optional<BsdfSample>>(Material, Hit, Vec3, std::vector<Vec2>));
+
+inline TraceSettings settingsOf(const TraceContext& context) {
+  return {context.lightSamples, context.maxDepth, context.russianRoulette};
+}
+
+}  // namespace pathlab::calls
+
+namespace pathlab::wire {
+template <>
+struct Fields<calls::TraceSettings> {
+  static auto tie(calls::TraceSettings& s) { return std::tie(s.lightSamples, s.maxDepth, s.russianRoulette); }
+};
+}  // namespace pathlab::wire
+
+namespace pathlab::candidate {
+
+// estimateDirectLighting(context, hit, Bsdf(material of hit, hit, wo), wo, Sampler(pixel, 0, seed)) per query.
+inline std::vector<Color> estimateDirectLighting(const TraceContext& context, const std::vector<calls::DirectQuery>& queries) {
+  return remote::call<calls::DirectLighting>(context.scene, calls::settingsOf(context), queries);
+}
+// tracePath(context, ray, Sampler(pixel, 0, seed)) per query.
+inline std::vector<Color> tracePaths(const TraceContext& context, const std::vector<calls::PathQuery>& queries) {
+  return remote::call<calls::TracePaths>(context.scene, calls::settingsOf(context), queries);
+}
+inline std::vector<std::optional<BsdfSample>> bsdfSamples(const Material& material, const Hit& hit, const Vec3& wo,
+                                                          const std::vector<Vec2>& us) {
+  return remote::call<calls::BsdfSamples>(material, hit, wo, us);
+}
+
+}  // namespace pathlab::candidate

@@ -1,0 +1,256 @@
+// The bytes that cross between the judge and the candidate: every argument
+// and result of a remote call, written field by field in native byte order
+// (both processes run on the same machine).
+//
+// The judge decodes what a hostile candidate sends, so decoding never
+// trusts a size: every count is checked against the bytes that are really
+// there before anything is allocated, booleans must be 0 or 1, an image's
+// pixel count must match its size, and a message must be consumed exactly.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "pathlab/camera.h"
+#include "pathlab/hit.h"
+#include "pathlab/image.h"
+#include "pathlab/lights.h"
+#include "pathlab/bsdf.h"
+#include "pathlab/scene.h"
+#include "pathlab/tasks/bvh.h"
+#include "pathlab/tasks/camera_rays.h"
+#include "pathlab/tasks/direct_lighting.h"
+#include "pathlab/tasks/environment.h"
+#include "pathlab/tasks/intersection.h"
+
+namespace pathlab::wire {
+
+// A message that does not decode: the other side sent something malformed.
+class WireError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Writer {
+ public:
+  void raw(const void* data, size_t size) { bytes_.append(static_cast<const char*>(data), size); }
+  template <class T>
+  void put(const T& value);
+  std::string& bytes() { return bytes_; }
+
+ private:
+  std::string bytes_;
+};
+
+class Reader {
+ public:
+  Reader(const char* data, size_t size) : at_(data), end_(data + size) {}
+  explicit Reader(const std::string& bytes) : Reader(bytes.data(), bytes.size()) {}
+
+  void raw(void* out, size_t size) {
+    if (size > remaining()) throw WireError("message ends early");
+    std::memcpy(out, at_, size);
+    at_ += size;
+  }
+  // A count of elements that each take at least `minimumSize` bytes: larger
+  // than what is left of the message means the message lies.
+  size_t count(size_t minimumSize) {
+    uint64_t n = 0;
+    raw(&n, sizeof n);
+    if (minimumSize > 0 && n > remaining() / minimumSize) throw WireError("count larger than the message");
+    return size_t(n);
+  }
+  size_t remaining() const { return size_t(end_ - at_); }
+  void expectEnd() const {
+    if (at_ != end_) throw WireError("message has " + std::to_string(remaining()) + " bytes too many");
+  }
+  template <class T>
+  T get() {
+    T value{};
+    read(*this, value);
+    return value;
+  }
+
+ private:
+  const char* at_;
+  const char* end_;
+};
+
+// ---------------------------------------------------------------- codecs
+
+// Structs are written as the tuple of their fields: Fields<T>::tie(s).
+template <class T>
+struct Fields;
+
+template <class T>
+concept HasFields = requires(T& t) { Fields<T>::tie(t); };
+
+template <class T>
+concept Plain = std::is_arithmetic_v<T> && !std::is_same_v<T, bool>;
+
+template <class T>
+struct IsGlmVector : std::false_type {};
+template <glm::length_t N, class T, glm::qualifier Q>
+struct IsGlmVector<glm::vec<N, T, Q>> : std::true_type {};
+
+// Types whose bytes are their value (no padding, every bit pattern valid).
+template <class T>
+concept Bulk = Plain<T> || (IsGlmVector<T>::value && Plain<typename T::value_type>);
+
+template <Bulk T>
+void write(Writer& w, const T& value) { w.raw(&value, sizeof value); }
+template <Bulk T>
+void read(Reader& r, T& value) { r.raw(&value, sizeof value); }
+
+inline void write(Writer& w, bool value) { w.put(uint8_t(value ? 1 : 0)); }
+inline void read(Reader& r, bool& value) {
+  uint8_t b = r.get<uint8_t>();
+  if (b > 1) throw WireError("boolean is not 0 or 1");
+  value = b == 1;
+}
+
+template <class E>
+  requires std::is_enum_v<E>
+void write(Writer& w, E value) { w.put(static_cast<std::underlying_type_t<E>>(value)); }
+template <class E>
+  requires std::is_enum_v<E>
+void read(Reader& r, E& value) { value = static_cast<E>(r.get<std::underlying_type_t<E>>()); }
+
+inline void write(Writer& w, const std::string& s) {
+  w.put(uint64_t(s.size()));
+  w.raw(s.data(), s.size());
+}
+inline void read(Reader& r, std::string& s) {
+  s.resize(r.count(1));
+  r.raw(s.data(), s.size());
+}
+
+template <class T>
+void write(Writer& w, const std::vector<T>& v) {
+  w.put(uint64_t(v.size()));
+  if constexpr (Bulk<T>) {
+    w.raw(v.data(), v.size() * sizeof(T));
+  } else {
+    for (const T& x : v) w.put(x);
+  }
+}
+template <class T>
+void read(Reader& r, std::vector<T>& v) {
+  if constexpr (Bulk<T>) {
+    v.resize(r.count(sizeof(T)));
+    r.raw(v.data(), v.size() * sizeof(T));
+  } else {
+    v.clear();
+    v.resize(r.count(1));  // every element takes at least a byte
+    for (T& x : v) read(r, x);
+  }
+}
+
+template <class T>
+void write(Writer& w, const std::optional<T>& o) {
+  write(w, o.has_value());
+  if (o) w.put(*o);
+}
+template <class T>
+void read(Reader& r, std::optional<T>& o) {
+  if (r.get<bool>()) {
+    o.emplace();
+    read(r, *o);
+  } else {
+    o.reset();
+  }
+}
+
+template <class... T>
+void write(Writer& w, const std::tuple<T...>& t) {
+  std::apply([&](const auto&... x) { (write(w, x), ...); }, t);
+}
+template <class... T>
+void read(Reader& r, std::tuple<T...>& t) {
+  std::apply([&](auto&... x) { (read(r, x), ...); }, t);
+}
+
+template <HasFields T>
+void write(Writer& w, const T& s) { write(w, Fields<T>::tie(const_cast<T&>(s))); }
+template <HasFields T>
+void read(Reader& r, T& s) {
+  auto fields = Fields<T>::tie(s);
+  read(r, fields);
+}
+
+template <class T>
+void Writer::put(const T& value) { write(*this, value); }
+
+// Field lists of the framework's and the tasks' value types.
+#define PATHLAB_WIRE_FIELDS(Type, ...)                       \
+  template <>                                                \
+  struct Fields<Type> {                                      \
+    static auto tie(Type& s) { return std::tie(__VA_ARGS__); } \
+  }
+
+PATHLAB_WIRE_FIELDS(Interval, s.min, s.max);
+PATHLAB_WIRE_FIELDS(Ray, s.origin, s.direction);
+PATHLAB_WIRE_FIELDS(Camera, s.position, s.lookAt, s.up, s.vfovDegrees);
+PATHLAB_WIRE_FIELDS(CameraBasis, s.forward, s.right, s.up);
+PATHLAB_WIRE_FIELDS(TriangleHit, s.t, s.b1, s.b2);
+PATHLAB_WIRE_FIELDS(SurfacePoint, s.point, s.geometricNormal, s.shadingNormal);
+PATHLAB_WIRE_FIELDS(Aabb, s.min, s.max);
+PATHLAB_WIRE_FIELDS(BvhNode, s.bounds, s.leftOrFirst, s.count);
+PATHLAB_WIRE_FIELDS(Bvh, s.nodes, s.primitives);
+PATHLAB_WIRE_FIELDS(TraversalStats, s.nodesVisited, s.boxTests, s.primitiveTests);
+PATHLAB_WIRE_FIELDS(PrimitiveHit, s.t, s.b1, s.b2, s.primitive);
+PATHLAB_WIRE_FIELDS(Hit, s.t, s.point, s.geometricNormal, s.shadingNormal, s.primitive, s.material);
+PATHLAB_WIRE_FIELDS(AreaSample, s.point, s.normal, s.radiance, s.pdfArea);
+PATHLAB_WIRE_FIELDS(LightDirection, s.wi, s.distance, s.pdfSolidAngle);
+PATHLAB_WIRE_FIELDS(BsdfSample, s.wi, s.f, s.pdf, s.isDelta);
+PATHLAB_WIRE_FIELDS(EnvironmentDistribution, s.width, s.height, s.marginalCdf, s.conditionalCdf, s.totalWeight);
+PATHLAB_WIRE_FIELDS(EnvironmentSample, s.direction, s.pdfSolidAngle);
+PATHLAB_WIRE_FIELDS(Material, s.name, s.type, s.albedo, s.transmittance, s.ior, s.emission);
+PATHLAB_WIRE_FIELDS(TriangleMesh, s.name, s.positions, s.normals, s.triangles, s.material);
+PATHLAB_WIRE_FIELDS(Sphere, s.center, s.radius, s.material);
+PATHLAB_WIRE_FIELDS(PointLight, s.position, s.intensity);
+PATHLAB_WIRE_FIELDS(RenderSettings, s.width, s.height, s.samplesPerPixel, s.lightSamples, s.maxDepth, s.seed);
+
+#undef PATHLAB_WIRE_FIELDS
+
+// An image: its pixel count must match its size.
+inline void write(Writer& w, const Image& image) {
+  w.put(image.width);
+  w.put(image.height);
+  w.put(image.pixels);
+}
+inline void read(Reader& r, Image& image) {
+  r.raw(&image.width, sizeof image.width);
+  r.raw(&image.height, sizeof image.height);
+  read(r, image.pixels);
+  if (image.width < 0 || image.height < 0 || image.pixels.size() != size_t(image.width) * size_t(image.height)) {
+    throw WireError("image size does not match its pixels");
+  }
+}
+
+template <>
+struct Fields<Environment> {
+  static auto tie(Environment& s) { return std::tie(s.color, s.imagePath, s.image, s.scale); }
+};
+
+// A scene without its primitive index, which the receiver rebuilds.
+template <>
+struct Fields<Scene> {
+  static auto tie(Scene& s) {
+    return std::tie(s.source, s.camera, s.render, s.materials, s.meshes, s.spheres, s.pointLights, s.environment);
+  }
+};
+inline void read(Reader& r, Scene& s) {
+  auto fields = Fields<Scene>::tie(s);
+  read(r, fields);
+  s.indexPrimitives();
+}
+
+}  // namespace pathlab::wire
