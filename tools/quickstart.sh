@@ -13,8 +13,9 @@ packages=(build-essential cmake ninja-build pkg-config git python3 libglm-dev li
           nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libpugixml-dev libembree-dev
           libglfw3-dev libimgui-dev python3-matplotlib)
 # The tests also start the GUI on a virtual display (Xvfb with Mesa's
-# software OpenGL) and look at its screenshots with ImageMagick.
-test_packages=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick)
+# software OpenGL) and look at its screenshots with ImageMagick, and run the
+# grader's sandbox (bubblewrap) against hostile submissions.
+test_packages=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick bubblewrap)
 
 install_packages() {
   local missing=()

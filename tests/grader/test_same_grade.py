@@ -3,7 +3,7 @@
 time reusing the first build) gives the same results.json, test by test —
 scores, statuses and every line of output — apart from the run time.
 
-usage: test_same_grade.py REPO BUILD_DIR FIRST_RESULTS.json"""
+usage: test_same_grade.py REPO GRADE_BUILD_DIR FIRST_RESULTS.json"""
 import json
 import re
 import subprocess
@@ -22,9 +22,9 @@ def comparable(results: dict) -> dict:
 
 def main() -> int:
     repo, build, first = Path(sys.argv[1]), Path(sys.argv[2]), Path(sys.argv[3])
-    second = build / "grade-solutions-again.json"
+    second = first.parent / "grade-solutions-again.json"
     subprocess.run([str(repo / "tools/grade"), str(repo / "solutions"), "--out", str(second),
-                    "--build-dir", str(build / "grade-solutions")], check=True, stdout=subprocess.DEVNULL)
+                    "--build-dir", str(build)], check=True, stdout=subprocess.DEVNULL)
     a, b = comparable(json.loads(first.read_text())), comparable(json.loads(second.read_text()))
     if a["tests"] != b["tests"] or a["score"] != b["score"]:
         for x, y in zip(a["tests"], b["tests"]):

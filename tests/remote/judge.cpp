@@ -6,11 +6,13 @@
 // that runs the candidate in a sandbox), else candidate-NN-name beside this
 // test-NN-name (the build's own, as ctest runs it).
 #include <fcntl.h>
+#include <poll.h>
 #include <malloc.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -142,9 +144,18 @@ class Candidate {
     drain_ = std::thread([this, fd = output[0]] { drainOutput(fd); });
   }
 
+  // Keeps what the candidate prints. A process it left behind may hold the
+  // pipe open forever: once the candidate is gone, drain what is there and stop.
   void drainOutput(int fd) {
     char buffer[4096];
     for (;;) {
+      pollfd p{fd, POLLIN, 0};
+      const int ready = ::poll(&p, 1, 50);
+      if (ready < 0 && errno == EINTR) continue;
+      if (ready <= 0) {
+        if (candidateGone_) break;
+        continue;
+      }
       const ssize_t n = ::read(fd, buffer, sizeof buffer);
       if (n < 0 && errno == EINTR) continue;
       if (n <= 0) break;
@@ -154,6 +165,12 @@ class Candidate {
       dropped_ += size_t(n) - keep;
     }
     ::close(fd);
+  }
+
+  void joinDrain() {
+    candidateGone_ = true;
+    if (drain_.joinable()) drain_.join();
+    candidateGone_ = false;
   }
 
   // Reaps a candidate that stopped answering; describes how it ended.
@@ -166,7 +183,7 @@ class Candidate {
     while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
     pid_ = -1;
-    if (drain_.joinable()) drain_.join();
+    joinDrain();
     std::string how;
     if (WIFSIGNALED(status) && WTERMSIG(status) != SIGKILL) {
       how = "the task's code crashed (" + signalName(WTERMSIG(status)) + ")";
@@ -190,7 +207,7 @@ class Candidate {
     while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
     }
     pid_ = -1;
-    if (drain_.joinable()) drain_.join();
+    joinDrain();
   }
 
   static std::string printable(const std::string& text) {
@@ -203,6 +220,7 @@ class Candidate {
   pid_t pid_ = -1;
   int toCandidate_ = -1, fromCandidate_ = -1;
   std::thread drain_;
+  std::atomic<bool> candidateGone_{false};
   std::mutex outputMutex_;
   std::string output_;
   size_t dropped_ = 0;

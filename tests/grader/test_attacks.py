@@ -1,0 +1,166 @@
+"""Hostile submissions against tools/grade (tests/grader/attacks/*.cpp).
+
+Each attack is a task-1 file: the stub (or the reference, for an attack
+that also does the work honestly) with the attack appended, which knows the
+real paths of the repository, the build and results.json (@ROOT@, @BUILD@,
+@OUT@: the worst case). Every attack must score exactly what its honest work
+earns (0 on the stub, full marks on the reference), and after each grade:
+the reference never appears in results.json, the repository's tracked files
+and the judge are unchanged, no process of the sandbox is left, nothing of
+the sandbox's is left in the shared temporary folders, results.json is not
+rewritten later, and the grade ended within its budget.
+
+usage: test_attacks.py REPO_ROOT BUILD_DIR [--sandbox bwrap|uid] [ATTACK ...]"""
+import hashlib
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+root, build = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
+args = sys.argv[3:]
+sandbox = "auto"
+if args[:1] == ["--sandbox"]:
+    sandbox, args = args[1], args[2:]
+only = set(args)
+grade_build = build / "grade-build"
+work = build / f"attacks-{sandbox}"
+SANDBOX_UID = int(os.environ.get("PATHLAB_SANDBOX_UID", "64990"))
+TIMEOUT, TASK_BUDGET = 3, 20  # seconds per test case and for the task (sleep-to-limit)
+# A line of the reference's task 1 that the stub does not have.
+SECRET = "basis.right = glm::normalize(right);"
+
+
+def tree_digest() -> str:
+    files = subprocess.run(["git", "-C", str(root), "ls-files", "-z"], capture_output=True, check=True).stdout
+    h = hashlib.sha256()
+    for name in sorted(files.decode().split("\0")):
+        path = root / name
+        if name and path.is_file():
+            h.update(name.encode() + b"\0" + path.read_bytes())
+    return h.hexdigest()
+
+
+def judge_digest() -> str:
+    judge = grade_build / "tests" / "test-01-camera-rays"
+    return hashlib.sha256(judge.read_bytes()).hexdigest() if judge.exists() else "none"
+
+
+def sandbox_processes():
+    found = []
+    for pid in os.listdir("/proc"):
+        try:
+            if pid.isdigit() and os.stat(f"/proc/{pid}").st_uid == SANDBOX_UID:
+                state = Path(f"/proc/{pid}/status").read_text().split("State:")[1].split()[0]
+                if state != "Z":
+                    found.append(pid)
+        except (OSError, IndexError):
+            pass
+    return found
+
+
+def sandbox_files():
+    found = []
+    for folder in ("/tmp", "/var/tmp", "/dev/shm"):
+        for dirpath, dirnames, filenames in os.walk(folder):
+            for name in dirnames + filenames:
+                try:
+                    if os.lstat(os.path.join(dirpath, name)).st_uid == SANDBOX_UID:
+                        found.append(os.path.join(dirpath, name))
+                except OSError:
+                    pass
+    return found
+
+
+def main() -> int:
+    if SECRET not in (root / "solutions/01-camera-rays/camera_rays.cpp").read_text():
+        print(f"the reference no longer contains the marker line '{SECRET}': update SECRET")
+        return 1
+    if SECRET in (root / "tasks/01-camera-rays/camera_rays.cpp").read_text():
+        print(f"the stub contains the marker line '{SECRET}': pick another")
+        return 1
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    attacks = sorted((root / "tests/grader/attacks").glob("*.cpp"))
+    if only:
+        attacks = [a for a in attacks if a.stem in only]
+    failures = []
+    # Warm up the grader's build (the judge must not change after this) and
+    # check that the reference still gets full marks in this sandbox mode.
+    warm = work / "reference.json"
+    subprocess.run([sys.executable, str(root / "tools/grade"), str(root / "solutions"), "--tasks", "1", "--out",
+                    str(warm), "--build-dir", str(grade_build), "--sandbox", sandbox], capture_output=True, timeout=1500)
+    if not warm.exists() or json.loads(warm.read_text())["score"] != 24:
+        failures.append(f"reference: not full marks with --sandbox {sandbox}")
+    before_tree = tree_digest()
+    judge_before = judge_digest()
+    for attack in attacks:
+        text = attack.read_text()
+        header = re.search(r"// base: (\w+)\s+expect: (\w+)", text)
+        base, expect = header.group(1), header.group(2)
+        out = work / f"{attack.stem}.json"
+        values = {"@ROOT@": str(root), "@BUILD@": str(grade_build), "@OUT@": str(out)}
+        body = re.sub("|".join(values), lambda m: values[m.group(0)], text)
+        prefix = "" if base == "none" else \
+            (root / ("solutions" if base == "reference" else "tasks") / "01-camera-rays/camera_rays.cpp").read_text()
+        submission = work / attack.stem
+        submission.mkdir()
+        (submission / "camera_rays.cpp").write_text(prefix + "\n" + body)
+        start = time.time()
+        grade = subprocess.run([sys.executable, str(root / "tools/grade"), str(submission), "--tasks", "1",
+                                "--out", str(out), "--build-dir", str(grade_build), "--timeout", str(TIMEOUT),
+                                "--task-budget", str(TASK_BUDGET), "--sandbox", sandbox], capture_output=True, text=True, timeout=900)
+        seconds = time.time() - start
+        problems = []
+        if not out.exists():
+            problems.append(f"no results.json (grader exit {grade.returncode}: {grade.stderr[-300:]})")
+        else:
+            report_text = out.read_text()
+            digest = hashlib.sha256(report_text.encode()).hexdigest()
+            report = json.loads(report_text)
+            points = sum(t["max_score"] for t in report["tests"])
+            wanted = points if expect == "full" else 0
+            if points != 24:
+                problems.append(f"the task's manifest changed: {points} points instead of 24")
+            if report["score"] != wanted:
+                problems.append(f"scored {report['score']:g}, expected {wanted}")
+            if SECRET in report_text:
+                problems.append("the reference's source is in results.json")
+            if attack.stem == "include-reference" and "may include only" not in report_text:
+                problems.append("the include of the reference was not refused with a clear message")
+            if attack.stem == "sleep-to-limit" and "time budget" not in report_text:
+                problems.append("tests past the task's budget are not reported as not run")
+            if attack.stem == "daemon":
+                time.sleep(3)  # the daemon would rewrite results.json every second
+                if hashlib.sha256(out.read_bytes()).hexdigest() != digest:
+                    problems.append("results.json was rewritten after the grade")
+            if len(report_text) > 1_000_000:
+                problems.append(f"results.json is {len(report_text)} bytes: output not clipped")
+        if seconds > TASK_BUDGET + 60:
+            problems.append(f"the grade took {seconds:.0f} s (budget {TASK_BUDGET} s)")
+        if judge_digest() != judge_before:
+            problems.append("the judge binary changed")
+        left = sandbox_processes()
+        if left:
+            problems.append(f"{len(left)} sandbox processes still running")
+        files = sandbox_files()
+        if files:
+            problems.append(f"sandbox files left behind: {files[:3]}")
+        status = "ok" if not problems else "FAIL: " + "; ".join(problems)
+        print(f"{attack.stem:20s} {sandbox:5s} {seconds:5.1f} s  {status}")
+        failures += [f"{attack.stem}: {p}" for p in problems]
+    if tree_digest() != before_tree:
+        failures.append("the repository's tracked files changed")
+    for f in failures:
+        print("FAIL:", f)
+    checks = len(attacks) + 1
+    print(f"{checks - len({f.split(':')[0] for f in failures})} passed, {len({f.split(':')[0] for f in failures})} failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
