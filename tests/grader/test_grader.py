@@ -42,7 +42,7 @@ mutate("path_tracing.cpp", "  return radiance;\n}", "  return radiance * std::na
 
 out = build / "broken-results.json"
 grade = subprocess.run([sys.executable, str(root / "tools" / "grade"), str(submission), "--out", str(out),
-                        "--build-dir", str(build / "grade-build"), "--timeout", "3"],
+                        "--build-dir", str(build / "grade-build"), "--timeout", "10"],
                        capture_output=True, text=True, timeout=1500)
 print(grade.stdout[-2000:], grade.stderr[-2000:])
 report = json.loads(out.read_text())

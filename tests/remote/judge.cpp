@@ -179,8 +179,14 @@ class Candidate {
     ::close(fromCandidate_);
     toCandidate_ = fromCandidate_ = -1;
     int status = 0;
-    ::kill(pid_, SIGKILL);  // it may still be alive with its pipes closed
-    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    // Let a crashing candidate (or the sandbox reporting its crash) finish
+    // exiting before the kill, so its own end is the one reported.
+    pid_t done = 0;
+    for (int i = 0; i < 100 && (done = ::waitpid(pid_, &status, WNOHANG)) == 0; ++i) ::usleep(10000);
+    if (done == 0) {
+      ::kill(pid_, SIGKILL);  // still alive with its pipes closed
+      while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+      }
     }
     pid_ = -1;
     joinDrain();
