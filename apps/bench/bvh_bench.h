@@ -6,7 +6,7 @@
 namespace pathlab::bench {
 
 struct BvhBenchOptions {
-  std::string mesh;  // OBJ path; empty: the shared bunny, else a generated mesh
+  std::string mesh;  // OBJ path; empty: the data folder's bunny, else a generated scan-like mesh
   int threads = 0;   // for the multithreaded runs; 0: all cores
   int triangles = 0; // > 0: a generated mesh of about this many triangles instead
   bool json = false;

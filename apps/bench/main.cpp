@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   pathlab::bench::BvhBenchOptions bvh;
   CLI::App* bvhCommand = app.add_subcommand("bvh", "The reference BVH against Intel Embree on the same rays");
-  bvhCommand->add_option("mesh", bvh.mesh, "OBJ mesh (default: the course's bunny, else a generated mesh)");
+  bvhCommand->add_option("mesh", bvh.mesh, "OBJ mesh (default: $PATHLAB_DATA_DIR/models/stanford-bunny.obj, else a generated scan-like mesh)");
   bvhCommand->add_option("--threads", bvh.threads, "Threads for the multithreaded runs (default: all cores)");
   bvhCommand->add_flag("--json", bvh.json, "Print one JSON object as the last line");
   bvhCommand->add_option("--triangles", bvh.triangles, "Use a generated mesh of about N triangles (scaling)");

@@ -14,6 +14,7 @@
 #include <unordered_map>
 
 #include "pathlab/error.h"
+#include "pathlab/procedural.h"
 
 namespace pathlab {
 namespace {
@@ -364,6 +365,15 @@ TriangleMesh quadMesh(const Object& o) {
   return mesh;
 }
 
+// A closed bumpy sphere of radius about 1 at the origin (pathlab/procedural.h):
+// a scanned model's triangle count and thin slivers, made in code.
+TriangleMesh bumpySphereMesh(const Object& o) {
+  Object b(o.source(), o.at("bumpy_sphere"), o.field("bumpy_sphere"), {"rings", "segments"});
+  const int rings = int(b.integer("rings", 64, 2, 4096));
+  const int segments = int(b.integer("segments", 128, 3, 4096));
+  return bumpySphere(rings, segments);
+}
+
 bool hasArea(const TriangleMesh& mesh) {
   for (const glm::uvec3& t : mesh.triangles) {
     Vec3 e1 = mesh.positions[t.y] - mesh.positions[t.x], e2 = mesh.positions[t.z] - mesh.positions[t.x];
@@ -430,16 +440,20 @@ Scene parseScene(const Source& source, const Json& root) {
     const Json& meshes = top.array("meshes");
     for (size_t i = 0; i < meshes.size(); ++i) {
       Object o(source, meshes[i], indexed("meshes", i),
-               {"name", "obj", "positions", "triangles", "normals", "quad", "material", "transform"});
-      int shapes = int(o.has("obj")) + int(o.has("positions") || o.has("triangles")) + int(o.has("quad"));
+               {"name", "obj", "positions", "triangles", "normals", "quad", "bumpy_sphere", "material", "transform"});
+      int shapes = int(o.has("obj")) + int(o.has("positions") || o.has("triangles")) + int(o.has("quad")) +
+                   int(o.has("bumpy_sphere"));
       if (shapes != 1) {
-        o.fail(indexed("meshes", i), "expected exactly one of \"obj\", \"positions\"+\"triangles\" or \"quad\"");
+        o.fail(indexed("meshes", i),
+               "expected exactly one of \"obj\", \"positions\"+\"triangles\", \"quad\" or \"bumpy_sphere\"");
       }
       TriangleMesh mesh;
       if (o.has("obj")) {
         mesh = loadObj(o, o.string("obj", ""));
       } else if (o.has("quad")) {
         mesh = quadMesh(o);
+      } else if (o.has("bumpy_sphere")) {
+        mesh = bumpySphereMesh(o);
       } else {
         if (!o.has("positions") || !o.has("triangles")) {
           o.fail(indexed("meshes", i), "an inline mesh needs both \"positions\" and \"triangles\"");

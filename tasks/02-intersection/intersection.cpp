@@ -42,7 +42,7 @@ namespace pathlab {
 //      t = tScaled / det; b1 = e1 / det, b2 = e2 / det.
 //
 // PITFALL: an absolute epsilon (|det| < 1e-6) throws away every hit on small
-// triangles: the native-scale bunny's triangles are about 1e-3 across.
+// triangles: a scanned model's triangles are about 1e-3 across.
 // PITFALL: if an edge function is exactly 0 in float, recompute the three in
 // double, so the two triangles sharing that edge agree on which side it is.
 // PITFALL: a triangle with zero area has no normal; never report a hit on it.

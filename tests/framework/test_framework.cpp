@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "check.h"
+#include "course_scene.h"
 #include "pathlab/error.h"
 #include "pathlab/image.h"
 #include "pathlab/random.h"
@@ -141,40 +142,66 @@ TEST_CASE("scene: OBJ meshes load with transforms, relative to the scene file") 
   CHECK(near(hi, Vec3(2, 2, -3), 1e-6f));
 }
 
+// The Cornell boxes the course ships, as its exporter writes them.
+void checkCourseCornellBox(const Scene& scene, bool mirrorAndGlass) {
+  CHECK(scene.meshes.size() == 6);   // floor, ceiling, three walls, the light
+  CHECK(scene.triangleCount() == 12);
+  REQUIRE(scene.spheres.size() == 2);
+  CHECK(scene.spheres[0].radius == doctest::Approx(0.3f));
+  CHECK(scene.pointLights.empty());  // the <area> light is the emissive mesh
+  int emissive = 0, mirrors = 0, glass = 0;
+  for (const TriangleMesh& m : scene.meshes) emissive += scene.materials[m.material].isEmissive();
+  for (const Sphere& sphere : scene.spheres) {
+    mirrors += scene.materials[sphere.material].type == MaterialType::Mirror;
+    glass += scene.materials[sphere.material].type == MaterialType::Glass;
+  }
+  CHECK(emissive == 1);
+  if (mirrorAndGlass) {
+    CHECK(mirrors == 1);
+    CHECK(glass == 1);
+  }
+  CHECK(scene.render.width == 400);
+  CHECK(scene.render.height == 300);  // aspect ratio 1.333 from the file
+  // Z-up file: the camera looks along -y with z up, at the box's centre.
+  CHECK(near(glm::normalize(scene.camera.lookAt - scene.camera.position), Vec3(0, -1, 0), 1e-4f));
+  CHECK(scene.camera.up.z > 0.99f);
+  // The light faces down (-z): its geometric normal from the winding.
+  for (const TriangleMesh& m : scene.meshes) {
+    if (!scene.materials[m.material].isEmissive()) continue;
+    const glm::uvec3& t = m.triangles[0];
+    Vec3 n = glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]);
+    CHECK(n.z < 0.0f);
+  }
+}
+
 TEST_CASE("scene: the course's COLLADA Cornell boxes load with their materials, lights and camera") {
+  const auto dir = std::filesystem::temp_directory_path() / "pathlab-test-course";
+  std::filesystem::create_directories(dir);
+  for (const char* profile : {"CMU462", "CGL"}) {
+    for (bool mirrorAndGlass : {false, true}) {
+      CAPTURE(profile);
+      CAPTURE(mirrorAndGlass);
+      const auto path = dir / (std::string(profile) + (mirrorAndGlass ? "-CBspheres.dae" : "-CBspheres_lambertian.dae"));
+      std::ofstream(path) << courseCornellBox({.profile = profile, .mirrorAndGlass = mirrorAndGlass});
+      checkCourseCornellBox(loadScene(path.string()), mirrorAndGlass);
+    }
+  }
+}
+
+TEST_CASE("scene: the course's own files, from the optional data folder $PATHLAB_DATA_DIR") {
+  const std::string dir = dataDir();
+  if (dir.empty()) {
+    MESSAGE("skipped: PATHLAB_DATA_DIR is not set (README.md, Optional data)");
+    return;
+  }
   for (const char* name : {"CBspheres_lambertian.dae", "CBspheres.dae"}) {
-    const std::string path = sharedPath(std::string("course-scenes/") + name);
-    REQUIRE(std::filesystem::exists(path));
-    Scene scene = loadScene(path);
-    CAPTURE(name);
-    CHECK(scene.meshes.size() == 6);   // floor, ceiling, three walls, the light
-    CHECK(scene.triangleCount() == 12);
-    REQUIRE(scene.spheres.size() == 2);
-    CHECK(scene.spheres[0].radius == doctest::Approx(0.3f));
-    CHECK(scene.pointLights.empty());  // the <area> light is the emissive mesh
-    int emissive = 0, mirrors = 0, glass = 0;
-    for (const TriangleMesh& m : scene.meshes) emissive += scene.materials[m.material].isEmissive();
-    for (const Sphere& sphere : scene.spheres) {
-      mirrors += scene.materials[sphere.material].type == MaterialType::Mirror;
-      glass += scene.materials[sphere.material].type == MaterialType::Glass;
+    const std::string path = dir + "/course-scenes/" + name;
+    if (!std::filesystem::exists(path)) {
+      MESSAGE("skipped: no " << path);
+      continue;
     }
-    CHECK(emissive == 1);
-    if (std::string(name) == "CBspheres.dae") {
-      CHECK(mirrors == 1);
-      CHECK(glass == 1);
-    }
-    CHECK(scene.render.width == 400);
-    CHECK(scene.render.height == 300);  // aspect ratio 1.333 from the file
-    // Z-up file: the camera looks along -y with z up, at the box's centre.
-    CHECK(near(glm::normalize(scene.camera.lookAt - scene.camera.position), Vec3(0, -1, 0), 1e-4f));
-    CHECK(scene.camera.up.z > 0.99f);
-    // The light faces down (-z): its geometric normal from the winding.
-    for (const TriangleMesh& m : scene.meshes) {
-      if (!scene.materials[m.material].isEmissive()) continue;
-      const glm::uvec3& t = m.triangles[0];
-      Vec3 n = glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]);
-      CHECK(n.z < 0.0f);
-    }
+    CAPTURE(path);
+    checkCourseCornellBox(loadScene(path), std::string(name) == "CBspheres.dae");
   }
 }
 

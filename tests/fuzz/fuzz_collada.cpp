@@ -1,4 +1,4 @@
-// The COLLADA importer on arbitrary XML (seed corpus: ../shared/course-scenes, tests/inputs).
+// The COLLADA importer on arbitrary XML (seed corpus: tests/inputs, and $PATHLAB_DATA_DIR/course-scenes when set).
 #include "fuzz_support.h"
 #include "pathlab/error.h"
 #include "pathlab/scene_io.h"

@@ -56,6 +56,7 @@ class Reader {
 
   void raw(void* out, size_t size) {
     if (size > remaining()) throw WireError("message ends early");
+    if (size == 0) return;  // an empty vector's data() may be null, which memcpy must not see
     std::memcpy(out, at_, size);
     at_ += size;
   }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "check.h"
+#include "pathlab/procedural.h"
 #include "pathlab/scene.h"
 #include "pathlab/scene_io.h"
 
@@ -26,12 +27,6 @@ inline Scene randomScene(Random& random, int triangles, int spheres, double scal
   }
   scene.indexPrimitives();
   return scene;
-}
-
-// The Stanford bunny at its native scale (~0.15 units across).
-inline Scene bunnyScene() {
-  const std::string path = sharedPath("models/stanford-bunny.obj");
-  return loadSceneFromJson("{\"meshes\": [{\"obj\": \"" + path + "\"}]}", "bunny", "");
 }
 
 }  // namespace pathlab::test

@@ -1,0 +1,20 @@
+// Geometry made in code, so tests and benchmarks need no data files.
+#pragma once
+
+#include "pathlab/scene.h"
+
+namespace pathlab {
+
+// A closed, bumpy sphere: `rings` bands of `segments` quads, closed at each
+// pole by a fan (2 (rings - 1) segments triangles, no degenerate ones),
+// about `radius` from `center`, scaled per axis by `stretch`.
+TriangleMesh bumpySphere(int rings, int segments, double radius = 1.0, glm::dvec3 center = glm::dvec3(0.0),
+                         glm::dvec3 stretch = glm::dvec3(1.0));
+
+// A stand-in for a scanned model with the Stanford bunny's hard properties:
+// 65,024 triangles about 1.5e-3 across (so |det| in Moller-Trumbore is
+// ~1e-6), closed, 0.15 units across and off the origin, slivers at the poles.
+// One diffuse material; primitives indexed.
+Scene scanLikeScene();
+
+}  // namespace pathlab
