@@ -1,6 +1,9 @@
 #include "pathlab/parallel.h"
 
+#include <pthread.h>
+
 #include <algorithm>
+#include <csignal>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -37,10 +40,23 @@ void forEachTile(int width, int height, int tileSize, int threads,
       next = tileCount;  // stop the other workers soon
     }
   };
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(worker);
-  worker();
-  for (std::thread& thread : pool) thread.join();
+  if (threads == 1) {
+    worker();
+  } else {
+    // Workers start with SIGINT and SIGTERM blocked, so Ctrl-C reaches the
+    // calling thread, which only waits: its handler runs at once (under
+    // ThreadSanitizer too, which defers a signal that lands in a thread busy
+    // computing until that thread calls into the C library).
+    sigset_t stop, previous;
+    sigemptyset(&stop);
+    sigaddset(&stop, SIGINT);
+    sigaddset(&stop, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &stop, &previous);
+    std::vector<std::thread> pool;
+    for (int i = 0; i < threads; ++i) pool.emplace_back(worker);
+    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+    for (std::thread& thread : pool) thread.join();
+  }
   if (failure) std::rethrow_exception(failure);
 }
 

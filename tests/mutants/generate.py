@@ -128,8 +128,6 @@ MUTANTS = [
      [("  return EnvironmentSample{equirectToDirection(uv), pdfUv / (2.0f * kPi * kPi * sinTheta)};",
        "  return EnvironmentSample{equirectToDirection(uv), pdfUv / (2.0f * kPi * kPi)};"),
       ("  return pdfUv / (2.0f * kPi * kPi * sinTheta);\n}", "  return pdfUv / (2.0f * kPi * kPi);\n}")]),
-    (7, "weights-without-sin-theta", "pixel weights without sin(theta)",
-     [("    const double sinTheta = std::sin(M_PI * (j + 0.5) / map.height);", "    const double sinTheta = 1.0;")]),
     (7, "no-seam-wrap", "columns clamped instead of wrapped at the u seam",
      [("  const int x0 = (int(x0f) % map.width + map.width) % map.width;  // wraps at the u seam\n  const int x1 = (x0 + 1) % map.width;",
        "  const int x0 = std::clamp(int(x0f), 0, map.width - 1);\n  const int x1 = std::min(x0 + 1, map.width - 1);")]),
@@ -171,6 +169,19 @@ ALTERNATES = [
     (5, "fixed-roulette", "Russian roulette with a fixed q = 0.8 from the second bounce",
      [("      const float q = std::min(0.95f, maxComponent(throughput));", "      const float q = 0.8f;"),
       ("  constexpr int kRouletteFromBounce = 3;", "  constexpr int kRouletteFromBounce = 2;")]),
+    (7, "weights-without-sin-theta", "pixel weights without sin(theta): correct, only noisier (the handout says so)",
+     [("    const double sinTheta = std::sin(M_PI * (j + 0.5) / map.height);", "    const double sinTheta = 1.0;")]),
+    (6, "exact-fresnel", "the exact dielectric Fresnel equations instead of Schlick (the handout allows it)",
+     [("  const float fresnel = ior == 1.0f ? 0.0f : schlickFresnel(cosOutside, ior);",
+       "  const float cosInside = std::sqrt(std::max(0.0f, 1.0f - (1.0f - cosOutside * cosOutside) / (ior * ior)));\n"
+       "  const float rs = (cosOutside - ior * cosInside) / (cosOutside + ior * cosInside);\n"
+       "  const float rp = (cosInside - ior * cosOutside) / (cosInside + ior * cosOutside);\n"
+       "  const float fresnel = 0.5f * (rs * rs + rp * rp);")]),
+    (6, "ior-one-in-schlick", "F = 0 for ior = 1 inside schlickFresnel rather than in sampleGlass",
+     [("  const float r0 = (1.0f - ior) / (1.0f + ior);", "  if (ior == 1.0f) return 0.0f;  // no interface\n  const float r0 = (1.0f - ior) / (1.0f + ior);"),
+      ("  const float fresnel = ior == 1.0f ? 0.0f : schlickFresnel(cosOutside, ior);", "  const float fresnel = schlickFresnel(cosOutside, ior);")]),
+    (5, "roulette-from-first-vertex", "Russian roulette from the camera hit on (unbiased, noisier)",
+     [("  constexpr int kRouletteFromBounce = 3;", "  constexpr int kRouletteFromBounce = 0;")]),
     (7, "linear-search", "CDF inversion by linear search",
      [("  const float* it = std::upper_bound(cdf, cdf + n + 1, x);\n  int i = std::clamp(int(it - cdf) - 1, 0, n - 1);",
        "  int i = 0;\n  while (i + 1 < n && cdf[i + 1] <= x) ++i;")]),
