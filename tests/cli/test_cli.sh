@@ -36,9 +36,17 @@ err=$("$stubs" -q -s 1 -d 32x24 -o "$work/stubs.png" 2>&1 >/dev/null)
 # Ctrl-C (SIGINT) and SIGTERM write the image rendered so far and exit 130;
 # the file carries the samples per pixel reached, and the temporary file it
 # was written through is gone (written, then renamed).
-interrupt() {  # interrupt SIGNAL NAME: a long render to NAME.exr, stopped after a second
+interrupt() {  # interrupt SIGNAL NAME: a long render to NAME.exr, stopped once it catches SIGNAL
   "$pathlab" -s 1000000 -d 160x120 -o "$work/$2.exr" >/dev/null 2>"$work/$2.err" &
-  local pid=$!
+  local pid=$! number mask
+  number=$(kill -l "$1")
+  # Wait (up to 30 s on a loaded machine) until the handler is installed:
+  # bit SIGNAL-1 of SigCgt in /proc; then a second of rendering.
+  for _ in $(seq 300); do
+    mask=$(awk '/^SigCgt:/ {print $2}' "/proc/$pid/status" 2>/dev/null) || break
+    [[ -n $mask ]] && (( (0x$mask >> (number - 1)) & 1 )) && break
+    sleep 0.1
+  done
   sleep 1
   kill -"$1" $pid
   wait $pid
