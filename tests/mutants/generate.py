@@ -146,6 +146,23 @@ ALTERNATES = [
     (1, "duff-fallback-frame", "the up fallback from Duff et al.'s orthonormal basis",
      [("    Vec3 a = glm::abs(basis.forward);\n    Vec3 axis = (a.x <= a.y && a.x <= a.z) ? Vec3(1, 0, 0) : (a.y <= a.z ? Vec3(0, 1, 0) : Vec3(0, 0, 1));\n    right = glm::cross(basis.forward, axis);",
        "    const Vec3& n = basis.forward;\n    const float sign = std::copysign(1.0f, n.z), a = -1.0f / (sign + n.z), b = n.x * n.y * a;\n    right = Vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);")]),
+    (1, "matrix-camera", "the ray from inverse(projection * view) applied to NDC points, as in OpenGL",
+     [("#include <cmath>\n", "#include <cmath>\n\n#include <glm/gtc/matrix_transform.hpp>\n"),
+      ("  // Image plane at distance 1: half-height tan(vfov/2), half-width aspect times that.\n"
+       "  const float halfHeight = std::tan(glm::radians(camera.vfovDegrees) * 0.5f);\n"
+       "  const float halfWidth = halfHeight * float(resolution.x) / float(resolution.y);\n"
+       "  const Vec3 direction = basis.forward + (ndcX * halfWidth) * basis.right + (ndcY * halfHeight) * basis.up;\n",
+       "  const float aspect = float(resolution.x) / float(resolution.y);\n"
+       "  const glm::mat4 projection = glm::perspective(glm::radians(camera.vfovDegrees), aspect, 0.1f, 100.0f);\n"
+       "  const glm::mat4 view = glm::lookAt(camera.position, camera.position + basis.forward, basis.up);\n"
+       "  const glm::mat4 inverse = glm::inverse(projection * view);\n"
+       "  const glm::vec4 nearPoint = inverse * glm::vec4(ndcX, ndcY, -1.0f, 1.0f);\n"
+       "  const glm::vec4 farPoint = inverse * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);\n"
+       "  const Vec3 direction = Vec3(farPoint) / farPoint.w - Vec3(nearPoint) / nearPoint.w;\n")]),
+    (2, "moller-trumbore-double", "Moller-Trumbore in double precision with inclusive edges",
+     [("namespace {\n\nint largestAxis(const Vec3& v) { return (v.x > v.y) ? (v.x > v.z ? 0 : 2) : (v.y > v.z ? 1 : 2); }\n\nVec3 permute(const Vec3& v, int x, int y, int z) { return {v[x], v[y], v[z]}; }\n\n}  // namespace\n", ""),
+      ("  // Translate the vertices so the ray starts at the origin.\n  Vec3 a = p0 - ray.origin, b = p1 - ray.origin, c = p2 - ray.origin;\n\n  // Permute so the ray direction's largest component is z.\n  const int kz = largestAxis(glm::abs(ray.direction));\n  const int kx = (kz + 1) % 3, ky = (kx + 1) % 3;\n  const Vec3 d = permute(ray.direction, kx, ky, kz);\n  a = permute(a, kx, ky, kz);\n  b = permute(b, kx, ky, kz);\n  c = permute(c, kx, ky, kz);\n\n  // Shear x and y so the ray runs along +z; z is scaled later, only if needed.\n  const float shearX = -d.x / d.z, shearY = -d.y / d.z, shearZ = 1.0f / d.z;\n  a.x += shearX * a.z, a.y += shearY * a.z;\n  b.x += shearX * b.z, b.y += shearY * b.z;\n  c.x += shearX * c.z, c.y += shearY * c.z;\n\n  // 2D edge functions: twice the signed areas seen from the ray. A shared\n  // edge gives exactly opposite values in its two triangles.\n  float e0 = b.x * c.y - b.y * c.x;\n  float e1 = c.x * a.y - c.y * a.x;\n  float e2 = a.x * b.y - a.y * b.x;\n  if (e0 == 0.0f || e1 == 0.0f || e2 == 0.0f) {\n    // Exactly on an edge in float: decide in double so neighbours agree.\n    e0 = float(double(b.x) * c.y - double(b.y) * c.x);\n    e1 = float(double(c.x) * a.y - double(c.y) * a.x);\n    e2 = float(double(a.x) * b.y - double(a.y) * b.x);\n  }\n  if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) return std::nullopt;\n  const float det = e0 + e1 + e2;\n  if (det == 0.0f) return std::nullopt;  // edge-on, or a degenerate projection\n\n  // Scaled hit distance, compared against the range without dividing.\n  a.z *= shearZ, b.z *= shearZ, c.z *= shearZ;\n  const float tScaled = e0 * a.z + e1 * b.z + e2 * c.z;\n  if (det < 0.0f && (tScaled >= range.min * det || tScaled <= range.max * det)) return std::nullopt;\n  if (det > 0.0f && (tScaled <= range.min * det || tScaled >= range.max * det)) return std::nullopt;\n\n  // A zero-area triangle has no normal: never report a hit on it.\n  const Vec3 n = glm::cross(p1 - p0, p2 - p0);\n  if (n.x == 0.0f && n.y == 0.0f && n.z == 0.0f) return std::nullopt;\n\n  const float invDet = 1.0f / det;\n  return TriangleHit{tScaled * invDet, e1 * invDet, e2 * invDet};\n",
+       '  // Moller-Trumbore in double precision, edges inclusive, no epsilon.\n  using D = glm::dvec3;\n  const D o(ray.origin), d(ray.direction), v0(p0), e1 = D(p1) - v0, e2 = D(p2) - v0;\n  if (glm::length(glm::cross(e1, e2)) == 0.0) return std::nullopt;  // zero area\n  const D pv = glm::cross(d, e2);\n  const double det = glm::dot(e1, pv);\n  if (det == 0.0) return std::nullopt;\n  const D s = o - v0, qv = glm::cross(s, e1);\n  const double u = glm::dot(s, pv) / det, v = glm::dot(d, qv) / det;\n  if (u < 0.0 || v < 0.0 || u + v > 1.0) return std::nullopt;\n  const double t = glm::dot(e2, qv) / det;\n  if (!(t > range.min && t < range.max)) return std::nullopt;\n  return TriangleHit{float(t), float(u), float(v)};\n')]),
     (2, "double-precision-edges", "the edge functions always in double",
      [("  if (e0 == 0.0f || e1 == 0.0f || e2 == 0.0f) {", "  if (true) {")]),
     (2, "quadratic-in-double", "the ray-sphere quadratic solved in double precision",
@@ -156,6 +173,9 @@ ALTERNATES = [
     (3, "unordered-traversal", "closest hit without visiting the nearer child first",
      [("        if (*tFar < *tNear) std::swap(near, far), std::swap(tNear, tFar);", "")]
      if False else [("      if (tFar < tNear) std::swap(near, far), std::swap(tNear, tFar);\n", "      if (tNear == kInfinity) std::swap(near, far), std::swap(tNear, tFar);\n")]),
+    (3, "range-not-shrunk", "closest hit keeps the nearer hit without shrinking range.max: correct, only slower (the handout says so)",
+     [("        if (auto hit = geometry.intersect(slot, ray, range)) {\n          closest = hit;\n          range.max = hit->t;  // from now on only closer hits count\n        }",
+       "        if (auto hit = geometry.intersect(slot, ray, range); hit && (!closest || hit->t < closest->t)) closest = hit;")]),
     (4, "relative-epsilon-offset", "ray origins moved by 1e-4 of the coordinates' size",
      [("    result[a] = std::abs(p[a]) < kOrigin ? p[a] + kFloatScale * n[a] : moved;",
        "    (void)moved, (void)kFloatScale, (void)kOrigin;\n    result[a] = p[a] + 1e-4f * std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1e-3f}) * n[a];")]),
@@ -166,6 +186,15 @@ ALTERNATES = [
        "  const float z = u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), z};"),
       ("float diffuseDirectionPdf(const Vec3& wi) { return wi.z > 0.0f ? wi.z * kInvPi : 0.0f; }",
        "float diffuseDirectionPdf(const Vec3& wi) { return wi.z > 0.0f ? 0.5f * kInvPi : 0.0f; }")]),
+    (5, "concentric-disk", "Shirley-Chiu concentric disk mapping, lifted onto the hemisphere",
+     [("  const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};",
+       "  const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f;\n"
+       "  if (a == 0.0f && b == 0.0f) return {0.0f, 0.0f, 1.0f};\n"
+       "  float r, phi;\n"
+       "  if (std::abs(a) > std::abs(b)) r = a, phi = (kPi / 4.0f) * (b / a);\n"
+       "  else r = b, phi = kPi / 2.0f - (kPi / 4.0f) * (a / b);\n"
+       "  const float x = r * std::cos(phi), y = r * std::sin(phi);\n"
+       "  return {x, y, std::sqrt(std::max(0.0f, 1.0f - x * x - y * y))};")]),
     (5, "fixed-roulette", "Russian roulette with a fixed q = 0.8 from the second bounce",
      [("      const float q = std::min(0.95f, maxComponent(throughput));", "      const float q = 0.8f;"),
       ("  constexpr int kRouletteFromBounce = 3;", "  constexpr int kRouletteFromBounce = 2;")]),
