@@ -215,4 +215,19 @@ ImageError compareImages(const Image& image, const Image& reference) {
   return {std::sqrt(squared / n), relative / n};
 }
 
+size_t zeroInvalidRadiance(Image& image) {
+  size_t invalid = 0;
+  for (Color& pixel : image.pixels) {
+    bool bad = false;
+    for (int c = 0; c < 3; ++c) {
+      if (!(pixel[c] >= 0.0f) || !std::isfinite(pixel[c])) {
+        pixel[c] = 0.0f;
+        bad = true;
+      }
+    }
+    invalid += bad ? 1 : 0;
+  }
+  return invalid;
+}
+
 }  // namespace pathlab

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -504,6 +505,10 @@ Scene parseScene(const Source& source, const Json& root) {
         env.image = readImage(env.imagePath);
       } catch (const Error& e) {
         o.fail(o.field("image"), e.what());
+      }
+      if (const size_t invalid = zeroInvalidRadiance(env.image)) {
+        std::fprintf(stderr, "warning: %s: %zu texels are NaN, infinite or negative; they count as black\n",
+                     env.imagePath.c_str(), invalid);
       }
     }
     scene.environment = std::move(env);

@@ -7,6 +7,8 @@
 #include <cmath>
 
 #include "check.h"
+#include "image_scenes.h"
+#include "image_test.h"
 #include "grading.h"
 #include "calls.h"
 
@@ -244,4 +246,40 @@ TEST_CASE("T1.3 camera ray: half-pixel offset — pixel centres, not corners, ar
   INFO("pixel (0,0) " << str(a.direction) << " pixel (3,1) " << str(b.direction));
   CHECK(near(a.direction, Vec3(-b.direction.x, -b.direction.y, b.direction.z), 1e-6f));
   checkRay(camera, candidate::pixelSamplePosition({0, 0}, Vec2(0.5f)), {4, 2});
+}
+
+// ---------------------------------------------------------------- images
+
+namespace {
+
+// A wide image of a scene that is different in every direction (colours
+// left, right, up, down), from a camera rolled by its up vector: a flipped,
+// stretched or rotated view changes the picture.
+Scene asymmetricScene() {
+  return sceneFromJson(R"({
+    "camera": { "position": [0.3, 1.2, 4], "look_at": [0, 0.6, 0], "up": [0.25, 1, 0], "vfov": 35 },
+    "render": { "width": 64, "height": 32, "spp": 32 },
+    "materials": {
+      "floor": { "albedo": [0.6, 0.6, 0.6] },
+      "red":   { "albedo": [0.9, 0.2, 0.1] },
+      "green": { "albedo": [0.2, 0.8, 0.2] },
+      "blue":  { "albedo": [0.2, 0.3, 0.9] }
+    },
+    "meshes": [
+      { "name": "floor", "material": "floor", "quad": { "corner": [-3, 0, 3], "edge_u": [6, 0, 0], "edge_v": [0, 0, -6] } },
+      { "name": "green wall", "material": "green", "quad": { "corner": [0.4, 0.2, -1], "edge_u": [1.4, 0, 0], "edge_v": [0, 1.2, 0] } }
+    ],
+    "spheres": [ { "center": [-1.2, 1.1, -0.5], "radius": 0.45, "material": "red" },
+                 { "center": [-0.3, 0.25, 0.8], "radius": 0.25, "material": "blue" } ],
+    "environment": { "color": [0.4, 0.45, 0.5] }
+  })", "asymmetric");
+}
+
+}  // namespace
+
+TEST_CASE("T1.3 image: a wide, rolled view of an asymmetric scene matches the reference" *
+          grading(3, "compare your picture with the reference (paths below): upside down means raster y is not "
+                     "flipped, mirrored means right points the wrong way, squeezed means the aspect ratio; a "
+                     "zoomed view means the field of view (vfov is in degrees, the full vertical angle)")) {
+  checkImage({"01-camera-rays", "asymmetric", asymmetricScene(), {.integrator = Integrator::Preview}});
 }

@@ -1,10 +1,12 @@
 // The candidate's side of task 2's calls: the linked intersection.cpp.
 #include "../remote/server.h"
+#include "../remote/serve_images.h"
 #include "calls.h"
 
 namespace pathlab::remote {
 
 void registerCalls(Server& server) {
+  serveImageCalls(server);
   server.serve<calls::IntersectTriangle>(&intersectTriangle);
   server.serve<calls::IntersectSphere>(&intersectSphere);
   server.serve<calls::TriangleSurfacePoint>(

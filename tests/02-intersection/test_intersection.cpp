@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "check.h"
+#include "image_scenes.h"
+#include "image_test.h"
 #include "grading.h"
 #include "meshes.h"
 #include "scenes.h"
@@ -530,4 +532,45 @@ TEST_CASE("T2.4 sphere surface point: on the sphere, with the outward unit norma
     double off = std::abs(glm::length(DVec3(s.point) - DVec3(center)) - radius);
     CHECK(off <= 1e-6 * (radius + glm::length(DVec3(center))));
   }
+}
+
+// ---------------------------------------------------------------- images
+
+namespace {
+
+// Triangles seen from both sides, a mesh with vertex normals and one whose
+// vertex normals point against its winding (the normals decide the
+// outside), spheres seen from outside and the enclosing sky sphere seen from
+// inside. The normals view shows each shading normal as a colour.
+Scene surfacesScene() {
+  Scene scene = sceneFromJson(R"({
+    "camera": { "position": [0, 1.0, 4], "look_at": [0, 0.6, 0], "up": [0, 1, 0], "vfov": 45 },
+    "render": { "width": 64, "height": 48, "spp": 16 },
+    "materials": { "grey": { "albedo": [0.6, 0.6, 0.6] }, "orange": { "albedo": [0.8, 0.5, 0.2] } },
+    "meshes": [
+      { "name": "floor", "material": "grey", "quad": { "corner": [-3, 0, 3], "edge_u": [6, 0, 0], "edge_v": [0, 0, -6] } },
+      { "name": "facing the camera", "material": "orange",
+        "quad": { "corner": [-2.0, 0.3, -0.5], "edge_u": [0.8, 0, 0], "edge_v": [0, 0.8, 0.2] } },
+      { "name": "facing away", "material": "orange",
+        "quad": { "corner": [-1.1, 1.1, -0.5], "edge_u": [0.8, 0, 0.1], "edge_v": [0, -0.8, 0] } }
+    ],
+    "spheres": [ { "center": [0.0, 0.3, 1.0], "radius": 0.3, "material": "orange" },
+                 { "center": [0, 0, 0], "radius": 20, "material": "grey" } ],
+    "lights": [ { "type": "point", "position": [1.5, 2.5, 2.5], "intensity": [6, 6, 6] } ]
+  })", "surfaces");
+  scene.meshes.push_back(smoothSphere(1, Point3(0.9f, 0.5f, -0.2f), 0.5f, 1));
+  TriangleMesh inverted = smoothSphere(1, Point3(1.7f, 0.3f, 0.9f), 0.3f, 1);
+  for (glm::uvec3& t : inverted.triangles) std::swap(t.y, t.z);  // wound inwards; the normals say outwards
+  scene.meshes.push_back(inverted);
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("T2.3 image: triangles from both sides, vertex normals and spheres from inside and out" *
+          grading(4, "compare your pictures with the references (paths below): in the normals view a wrong colour "
+                     "is a wrong normal (not interpolated, not unit, or not turned to the vertex normals' side); "
+                     "holes are missed hits (culled back faces, a sphere from inside)")) {
+  checkImage({"02-intersection", "surfaces-normals", surfacesScene(), {.integrator = Integrator::Normals}});
+  checkImage({"02-intersection", "surfaces-lit", surfacesScene(), {.integrator = Integrator::Direct}});
 }

@@ -1,10 +1,12 @@
 // The candidate's side of task 3's calls: the linked bvh.cpp.
 #include "../remote/server.h"
+#include "../remote/serve_images.h"
 #include "calls.h"
 
 namespace pathlab::remote {
 
 void registerCalls(Server& server) {
+  serveImageCalls(server);
   server.serve<calls::IntersectBox>(&intersectBox);
   server.serve<calls::BuildBvh>([](const std::vector<Aabb>& bounds) { return buildBvh(bounds); });
   server.serve<calls::IntersectClosest>(

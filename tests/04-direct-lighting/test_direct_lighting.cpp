@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "check.h"
+#include "image_scenes.h"
+#include "image_test.h"
 #include "grading.h"
 #include "pathlab/bsdf.h"
 #include "calls.h"
@@ -377,4 +379,81 @@ TEST_CASE("T4.4 direct lighting: a point on the light itself, or at a point ligh
   above.point = Point3(0.0f, 1.0f, 0.0f);
   above.geometricNormal = above.shadingNormal = Vec3(0, -1, 0);
   CHECK(estimate(context, above, Vec3(0, -1, 0), 500).mean() > 0.05);
+}
+
+// ---------------------------------------------------------------- images
+
+namespace {
+
+// Every kind of light on surfaces of every kind: a point light, a one-sided
+// emitting panel (facing +x: the floor left of it stays dark), an emitting
+// sphere; a quad wound away from the camera but lit on the camera's side,
+// and a sphere with vertex normals.
+Scene lightsScene() {
+  Scene scene = sceneFromJson(R"({
+    "camera": { "position": [0, 1, 4], "look_at": [0, 0.7, 0], "up": [0, 1, 0], "vfov": 45 },
+    "render": { "width": 64, "height": 48, "spp": 32, "light_samples": 2 },
+    "materials": {
+      "white": { "albedo": [0.7, 0.7, 0.7] },
+      "green": { "albedo": [0.3, 0.7, 0.35] },
+      "panel": { "albedo": [0.5, 0.5, 0.5], "emission": [3, 3, 3] },
+      "lamp":  { "albedo": [0.5, 0.5, 0.5], "emission": [4, 3, 2] }
+    },
+    "meshes": [
+      { "name": "floor", "material": "white", "quad": { "corner": [-3, 0, 3], "edge_u": [6, 0, 0], "edge_v": [0, 0, -6] } },
+      { "name": "wall", "material": "white", "quad": { "corner": [-3, 0, -1.5], "edge_u": [6, 0, 0], "edge_v": [0, 3, 0] } },
+      { "name": "panel facing +x", "material": "panel",
+        "quad": { "corner": [0.3, 0.2, 0.4], "edge_u": [0, 0, -0.8], "edge_v": [0, 0.9, 0] } },
+      { "name": "wound away from the camera", "material": "green",
+        "quad": { "corner": [-1.7, 1.3, 0.2], "edge_u": [0.9, 0, 0], "edge_v": [0, -0.9, 0] } }
+    ],
+    "spheres": [
+      { "center": [-1.2, 0.2, 0.9], "radius": 0.2, "material": "lamp" },
+      { "center": [-0.3, 0.3, 1.0], "radius": 0.3, "material": "white" }
+    ],
+    "lights": [ { "type": "point", "position": [-0.6, 1.6, 1.2], "intensity": [2.5, 2.5, 2.5] } ]
+  })", "lights");
+  scene.meshes.push_back(smoothSphere(2, Point3(1.1f, 0.45f, -0.3f), 0.45f, materialIndex(scene, "green")));
+  return scene;
+}
+
+// The same kinds of surface under a sky map with a sun (task 7's reference
+// samples it): the environment is a light like any other.
+Scene environmentScene() {
+  Scene scene = sceneFromJson(R"({
+    "camera": { "position": [0, 1.2, 4], "look_at": [0, 0.5, 0], "up": [0, 1, 0], "vfov": 45 },
+    "render": { "width": 64, "height": 48, "spp": 32, "light_samples": 1 },
+    "materials": {
+      "white": { "albedo": [0.7, 0.7, 0.7] },
+      "green": { "albedo": [0.3, 0.7, 0.35] }
+    },
+    "meshes": [
+      { "name": "floor", "material": "white", "quad": { "corner": [-3, 0, 3], "edge_u": [6, 0, 0], "edge_v": [0, 0, -6] } },
+      { "name": "wound away from the camera", "material": "green",
+        "quad": { "corner": [-1.6, 1.2, 0.2], "edge_u": [0.9, 0, 0], "edge_v": [0, -0.9, 0] } }
+    ],
+    "spheres": [ { "center": [-0.2, 0.35, 0.8], "radius": 0.35, "material": "white" } ]
+  })", "environment");
+  scene.meshes.push_back(smoothSphere(2, Point3(1.0f, 0.5f, -0.4f), 0.5f, materialIndex(scene, "green")));
+  Environment sky;
+  sky.imagePath = "(a sky made in code)";
+  sky.image = skyMap(32, 16, 0.3f, 0.3f, 60.0f);
+  scene.environment = sky;
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("T4.4 image: point, area and one-sided lights on back-wound and smooth-normal surfaces" *
+          grading(4, "compare your picture with the reference (paths below): a dark back-wound quad means the "
+                     "cosine uses a normal that is not turned towards wo (use bsdf.normal()); light left of the "
+                     "panel means emitters are two-sided; a wrong brightness everywhere, a missing 1/pi or pdf")) {
+  checkImage({"04-direct-lighting", "lights", lightsScene(), {.integrator = Integrator::Direct}});
+}
+
+TEST_CASE("T4.4 image: an environment map lights the scene like any other light" *
+          grading(3, "compare your picture with the reference (paths below): black surfaces under a sky mean "
+                     "the environment is not sampled (context.lights.environment, recipe step 4); the sample's "
+                     "pdfSolidAngle is already in solid angle")) {
+  checkImage({"04-direct-lighting", "environment", environmentScene(), {.integrator = Integrator::Direct}});
 }

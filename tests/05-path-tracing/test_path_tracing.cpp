@@ -10,6 +10,8 @@
 #include <cmath>
 
 #include "check.h"
+#include "image_scenes.h"
+#include "image_test.h"
 #include "grading.h"
 #include "meshes.h"
 #include "pathlab/bsdf.h"
@@ -222,4 +224,50 @@ TEST_CASE("T5.2 path tracing: no NaN or Inf in the Cornell box, at grazing angle
   // a NaN test: any working tracer lights some of these 20,000 paths
   // (roulette from the first vertex included).
   CHECK(bright > 0);
+}
+
+// ---------------------------------------------------------------- images
+
+namespace {
+
+// Diffuse and mirror spheres on a floor under a uniform sky: the sky is seen
+// directly, in the mirror, and lights everything by next-event estimation.
+Scene skyScene() {
+  return sceneFromJson(R"({
+    "camera": { "position": [0, 1.0, 4], "look_at": [0, 0.5, 0], "up": [0, 1, 0], "vfov": 40 },
+    "render": { "width": 48, "height": 36, "spp": 64, "max_depth": 3 },
+    "materials": {
+      "ground": { "albedo": [0.5, 0.5, 0.5] },
+      "clay":   { "albedo": [0.7, 0.35, 0.25] },
+      "mirror": { "type": "mirror", "reflectance": [0.9, 0.9, 0.9] }
+    },
+    "meshes": [
+      { "name": "ground", "material": "ground", "quad": { "corner": [-4, 0, 4], "edge_u": [8, 0, 0], "edge_v": [0, 0, -8] } }
+    ],
+    "spheres": [
+      { "center": [-0.6, 0.5, 0], "radius": 0.5, "material": "clay" },
+      { "center": [0.6, 0.5, -0.2], "radius": 0.5, "material": "mirror" }
+    ],
+    "environment": { "color": [0.5, 0.6, 0.8] }
+  })", "sky");
+}
+
+}  // namespace
+
+TEST_CASE("T5.2 image: a Cornell box with a mirror and a glass sphere, and a sky seen in a mirror" *
+          grading(4, "compare your picture with the reference (paths below): a black or dark mirror or glass "
+                     "means emission (or the sky) is not counted after delta bounces; walls too bright means "
+                     "emission counted after diffuse bounces as well (light sampling already covered it)")) {
+  checkImage({"05-path-tracing", "cornell-mirror-glass", cornellBox(48, 36, 64, 4, true), {}});
+  checkImage({"05-path-tracing", "sky", skyScene(), {}});
+}
+
+TEST_CASE("T5.2 image: -m 0, 1, 2 and 3 bounces without roulette" *
+          grading(3, "compare your pictures with the references (paths below): -m 0 shows only emitters, -m 1 adds "
+                     "direct light, each further bounce adds one more; a picture matching the next or previous "
+                     "depth is an off-by-one")) {
+  for (int depth = 0; depth <= 3; ++depth) {
+    checkImage({"05-path-tracing", "cornell-m" + std::to_string(depth), cornellBox(32, 24, 32, depth, false),
+                {.russianRoulette = false}});
+  }
 }

@@ -1,10 +1,12 @@
 // The candidate's side of task 6's calls: the linked mirror_glass.cpp.
 #include "../remote/serve_trace.h"
+#include "../remote/serve_images.h"
 #include "calls.h"
 
 namespace pathlab::remote {
 
 void registerCalls(Server& server) {
+  serveImageCalls(server);
   server.serve<calls::Reflect>(&reflect);
   server.serve<calls::Refract>(&refract);
   server.serve<calls::SchlickFresnel>(&schlickFresnel);

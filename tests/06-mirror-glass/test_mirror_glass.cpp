@@ -9,6 +9,8 @@
 #include <cmath>
 
 #include "check.h"
+#include "image_scenes.h"
+#include "image_test.h"
 #include "grading.h"
 #include "pathlab/bsdf.h"
 #include "calls.h"
@@ -283,4 +285,55 @@ TEST_CASE("T6.5 glass of index 1 is invisible: the light behind it arrives uncha
   }
   INFO(wrong << " of 2000 paths through index-1 glass did not see the emitter's 3.0");
   CHECK(wrong == 0);
+}
+
+// ---------------------------------------------------------------- images
+
+namespace {
+
+// Glass and mirrors under a sky: a glass sphere (refraction both ways), a
+// thick glass slab seen at a grazing angle (total internal reflection
+// inside it), a sphere of index 1 (invisible) and a mirror wall.
+Scene glassUnderSkyScene() {
+  Scene scene = sceneFromJson(R"({
+    "camera": { "position": [0, 1.1, 4], "look_at": [0, 0.5, 0], "up": [0, 1, 0], "vfov": 42 },
+    "render": { "width": 48, "height": 36, "spp": 64, "max_depth": 6 },
+    "materials": {
+      "ground": { "albedo": [0.6, 0.6, 0.6] },
+      "red":    { "albedo": [0.7, 0.2, 0.15] },
+      "glass":  { "type": "glass", "reflectance": [1, 1, 1], "transmittance": [0.9, 1, 0.9], "ior": 1.5 },
+      "air":    { "type": "glass", "reflectance": [1, 1, 1], "transmittance": [1, 1, 1], "ior": 1.0 },
+      "mirror": { "type": "mirror", "reflectance": [0.9, 0.85, 0.8] }
+    },
+    "meshes": [
+      { "name": "ground", "material": "ground", "quad": { "corner": [-4, 0, 4], "edge_u": [8, 0, 0], "edge_v": [0, 0, -8] } },
+      { "name": "mirror wall", "material": "mirror", "quad": { "corner": [-2, 0, -1.5], "edge_u": [4, 0, 0], "edge_v": [0, 1.6, 0] } },
+      { "name": "slab front", "material": "glass", "quad": { "corner": [0.5, 0.05, 0.6], "edge_u": [1.2, 0, 0], "edge_v": [0, 0.5, 0] } },
+      { "name": "slab back", "material": "glass", "quad": { "corner": [1.7, 0.05, 0.3], "edge_u": [-1.2, 0, 0], "edge_v": [0, 0.5, 0] } },
+      { "name": "slab top", "material": "glass", "quad": { "corner": [0.5, 0.55, 0.6], "edge_u": [1.2, 0, 0], "edge_v": [0, 0, -0.3] } },
+      { "name": "slab left", "material": "glass", "quad": { "corner": [0.5, 0.05, 0.3], "edge_u": [0, 0, 0.3], "edge_v": [0, 0.5, 0] } },
+      { "name": "slab right", "material": "glass", "quad": { "corner": [1.7, 0.05, 0.6], "edge_u": [0, 0, -0.3], "edge_v": [0, 0.5, 0] } }
+    ],
+    "spheres": [
+      { "center": [-0.8, 0.5, 0.2], "radius": 0.5, "material": "glass" },
+      { "center": [-0.6, 0.3, -0.8], "radius": 0.3, "material": "red" },
+      { "center": [0.4, 0.35, -0.4], "radius": 0.35, "material": "air" },
+      { "center": [0.4, 0.25, -0.4], "radius": 0.2, "material": "red" }
+    ]
+  })", "glass under a sky");
+  Environment sky;
+  sky.imagePath = "(a sky made in code)";
+  sky.image = skyMap(32, 16, 0.3f, 0.3f, 4.0f);
+  scene.environment = sky;
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("T6.5 image: mirror and glass spheres in a Cornell box, and glass, a slab and a mirror under a sky" *
+          grading(4, "compare your pictures with the references (paths below): glass too dark or too bright "
+                     "means its weight is not 1 (Fresnel chosen with probability F cancels F); a dark rim inside "
+                     "the slab means total internal reflection is missing; a visible index-1 sphere, a bent ray")) {
+  checkImage({"06-mirror-glass", "cornell-mirror-glass", cornellBox(48, 36, 64, 6, true), {}});
+  checkImage({"06-mirror-glass", "glass-under-sky", glassUnderSkyScene(), {}});
 }

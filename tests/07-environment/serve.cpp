@@ -1,10 +1,12 @@
 // The candidate's side of task 7's calls: the linked environment.cpp.
 #include "../remote/server.h"
+#include "../remote/serve_images.h"
 #include "calls.h"
 
 namespace pathlab::remote {
 
 void registerCalls(Server& server) {
+  serveImageCalls(server);
   server.serve<calls::DirectionToEquirect>(&directionToEquirect);
   server.serve<calls::EquirectToDirection>(&equirectToDirection);
   server.serve<calls::LookupEnvironment>(&lookupEnvironment);

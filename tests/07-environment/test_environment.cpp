@@ -7,8 +7,13 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <limits>
+#include <unistd.h>
 
 #include "check.h"
+#include "image_scenes.h"
+#include "image_test.h"
 #include "grading.h"
 #include "pathlab/random.h"
 #include "calls.h"
@@ -261,4 +266,86 @@ TEST_CASE("T7.5 importance sampling: an all-black map gives no samples and no Na
   CHECK(std::isfinite(candidate::environmentPdf(d, Vec3(0, 1, 0))));
   CHECK(std::isfinite(candidate::environmentPdf(d, Vec3(0, -1, 0))));
   CHECK(pdfIntegral(d) == doctest::Approx(1.0).epsilon(5e-3));
+}
+
+// ---------------------------------------------------------------- images
+
+namespace {
+
+// A 64 x 32 map whose hard places are visible: warm on one side of the u
+// seam and cool on the other (a lookup must blend across it), a band of
+// colours in the pole rows (they must meet at the zenith), a one-texel sun
+// of radiance 2000 (importance sampling must find it), and NaN, infinite and
+// negative texels, which the loader turns to black — the test writes the map
+// to an EXR and loads it as a user's scene would.
+Image testMap(bool withSun) {
+  Image map(64, 32);
+  for (int y = 0; y < map.height; ++y) {
+    for (int x = 0; x < map.width; ++x) {
+      const float u = (x + 0.5f) / float(map.width), v = (y + 0.5f) / float(map.height);
+      Color sky = u < 0.5f ? Color(0.9f, 0.6f, 0.3f) : Color(0.3f, 0.5f, 0.9f);
+      sky *= 0.4f + 0.8f * u;                                   // a ramp up to the seam at u = 1
+      if (y < 3) sky = Color(float(x % 8) / 8.0f, 0.3f, 1.0f - float(x % 8) / 8.0f);  // the pole rows
+      if (v > 0.5f) sky = Color(0.2f, 0.18f, 0.15f);             // ground
+      map.at(x, y) = sky;
+    }
+  }
+  if (withSun) map.at(20, 9) = Color(2000.0f, 1900.0f, 1700.0f);
+  map.at(40, 12) = Color(std::nanf(""), 1.0f, 1.0f);
+  map.at(41, 12) = Color(std::numeric_limits<float>::infinity());
+  map.at(42, 12) = Color(-50.0f, 0.5f, 0.5f);
+  return map;
+}
+
+// The map through the scene loader, as a user's file would come.
+Environment loadedEnvironment(bool withSun) {
+  const std::string path = std::filesystem::temp_directory_path() / ("pathlab-test-map-" +
+                           std::to_string(::getpid()) + (withSun ? "-sun.exr" : ".exr"));
+  writeImage(testMap(withSun), path);
+  Scene loaded = sceneFromJson(R"({ "environment": { "image": ")" + path + R"(" } })", "map");
+  std::filesystem::remove(path);
+  return *loaded.environment;
+}
+
+// Diffuse spheres on a floor, looking along +x (the u seam) and a little up.
+Scene skyLitScene(bool withSun) {
+  Scene scene = sceneFromJson(R"({
+    "camera": { "position": [-1, 0.8, 0], "look_at": [3, 1.0, 0], "up": [0, 1, 0], "vfov": 60 },
+    "render": { "width": 48, "height": 36, "spp": 64 },
+    "materials": { "white": { "albedo": [0.7, 0.7, 0.7] }, "clay": { "albedo": [0.7, 0.4, 0.3] } },
+    "meshes": [
+      { "name": "floor", "material": "white", "quad": { "corner": [-2, 0, 3], "edge_u": [6, 0, 0], "edge_v": [0, 0, -6] } }
+    ],
+    "spheres": [ { "center": [2, 0.4, -0.7], "radius": 0.4, "material": "clay" },
+                 { "center": [2.5, 0.5, 0.8], "radius": 0.5, "material": "white" } ]
+  })", "sky-lit");
+  scene.environment = loadedEnvironment(withSun);
+  return scene;
+}
+
+// Straight up at the zenith: every column's pole texels meet there.
+Scene zenithScene() {
+  Scene scene = sceneFromJson(R"({
+    "camera": { "position": [0, 0, 0], "look_at": [0, 1, 0], "up": [1, 0, 0], "vfov": 100 },
+    "render": { "width": 40, "height": 40, "spp": 16 }
+  })", "zenith");
+  scene.environment = loadedEnvironment(false);
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("T7.5 image: a sky with a one-texel sun lights a scene, seen across the seam and at the zenith" *
+          grading(4, "compare your pictures with the references (paths below): a seam line in the sky means u "
+                     "does not wrap; a wrong zenith, a pole problem; wrong brightness on the spheres means samples "
+                     "and environmentPdf disagree (the pdf in solid angle divides by 2 pi^2 sin(theta))")) {
+  checkImage({"07-environment", "sky-lit", skyLitScene(true), {.integrator = Integrator::Direct}});
+  checkImage({"07-environment", "zenith", zenithScene(), {.integrator = Integrator::Direct}});
+}
+
+TEST_CASE("T7.3 image: the same sky sampled uniformly over the sphere" *
+          grading(2, "compare your picture with the reference (paths below): uniform directions have "
+                     "pdf 1 / (4 pi) over the whole sphere; too bright or too dark means sampler and pdf disagree")) {
+  checkImage({"07-environment", "sky-lit-uniform", skyLitScene(false),
+              {.integrator = Integrator::Direct, .environmentSampling = EnvironmentSampling::Uniform}});
 }

@@ -42,6 +42,11 @@ Image readImage(const std::string& path);
 // after multiplying by `scale` (exposure) and clamping, as PNGs store it.
 std::vector<uint8_t> encodeSrgb8(const Image& image, int channels = 3, float scale = 1.0f);
 
+// Radiance is finite and non-negative: sets every NaN, infinite or negative
+// channel to 0 and returns how many pixels had one (environment maps pass
+// through it when loaded, so task 7's code never sees such texels).
+size_t zeroInvalidRadiance(Image& image);
+
 // sRGB transfer function, one channel.
 float linearToSrgb(float linear);
 float srgbToLinear(float encoded);

@@ -1,0 +1,259 @@
+#include "image_test.h"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <sstream>
+
+#include "../remote/image_calls.h"
+#include "check.h"
+#include "pathlab/error.h"
+#include "pathlab/image.h"
+
+namespace pathlab::test {
+namespace {
+
+constexpr int kBlock = 4;  // pixels per block side
+// Deterministic pixels (no variance in either image) may still differ by
+// float rounding between correct methods: this much is never significant.
+constexpr double kRelativeFloor = 1e-4, kAbsoluteFloor = 1e-6;
+
+// z such that P(|Z| > z) = p for a standard normal Z.
+double twoSidedQuantile(double p) {
+  double lo = 0.0, hi = 40.0;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (std::erfc(mid / std::sqrt(2.0)) > p ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+std::string referencePath(const ImageCase& c, const char* suffix) {
+  return std::string(PATHLAB_TESTS_DIR) + "/" + c.suite + "/images/" + c.name + suffix;
+}
+
+// One block (or the whole image) of one channel in both images.
+struct Comparison {
+  double yours = 0, yoursVariance = 0, reference = 0, referenceVariance = 0;
+  double z() const {
+    const double floor = kRelativeFloor * std::max(std::abs(yours), std::abs(reference)) + kAbsoluteFloor;
+    return (yours - reference) / std::sqrt(yoursVariance + referenceVariance + floor * floor);
+  }
+};
+
+Comparison compareRegion(const PixelMoments& yours, const PixelMoments& reference, int x0, int y0, int x1, int y1,
+                         int channel) {
+  Comparison c;
+  double n = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const size_t i = size_t(y) * size_t(yours.width) + size_t(x);
+      c.yours += yours.mean[i][channel];
+      // A render's own variance misses what its few samples never drew (a
+      // caustic, a firefly): the reference's, from 16x the samples, is the
+      // floor of what a correct render's variance can be.
+      c.yoursVariance += std::max(yours.varianceOfMean[i][channel],
+                                  reference.varianceOfMean[i][channel] * float(kReferenceSppFactor));
+      c.reference += reference.mean[i][channel];
+      c.referenceVariance += reference.varianceOfMean[i][channel];
+      ++n;
+    }
+  }
+  c.yours /= n;
+  c.reference /= n;
+  c.yoursVariance /= n * n;
+  c.referenceVariance /= n * n;
+  return c;
+}
+
+struct Verdict {
+  double limit = 0;          // |z| above this fails
+  double worstZ = 0;         // the block with the largest |z|
+  Comparison worst;
+  int worstX = 0, worstY = 0, worstChannel = 0;
+  Comparison whole[3];       // the whole image, per channel
+  std::vector<float> blockZ;  // per block, the channel with the largest |z| (signed)
+  bool pass() const {
+    return std::abs(worstZ) <= limit && std::abs(whole[0].z()) <= limit && std::abs(whole[1].z()) <= limit &&
+           std::abs(whole[2].z()) <= limit;
+  }
+};
+
+Verdict compare(const PixelMoments& yours, const PixelMoments& reference) {
+  Verdict v;
+  const int blocksX = (yours.width + kBlock - 1) / kBlock, blocksY = (yours.height + kBlock - 1) / kBlock;
+  const int tests = 3 * (blocksX * blocksY + 1);
+  v.limit = twoSidedQuantile(kImageFalseFailure / tests);
+  v.blockZ.assign(size_t(blocksX) * size_t(blocksY), 0.0f);
+  for (int by = 0; by < blocksY; ++by) {
+    for (int bx = 0; bx < blocksX; ++bx) {
+      for (int channel = 0; channel < 3; ++channel) {
+        const Comparison c = compareRegion(yours, reference, bx * kBlock, by * kBlock,
+                                           std::min(yours.width, (bx + 1) * kBlock),
+                                           std::min(yours.height, (by + 1) * kBlock), channel);
+        const double z = c.z();
+        float& block = v.blockZ[size_t(by) * size_t(blocksX) + size_t(bx)];
+        if (std::abs(z) > std::abs(block)) block = float(z);
+        if (std::abs(z) > std::abs(v.worstZ)) {
+          v.worstZ = z;
+          v.worst = c;
+          v.worstX = bx * kBlock;
+          v.worstY = by * kBlock;
+          v.worstChannel = channel;
+        }
+      }
+    }
+  }
+  for (int channel = 0; channel < 3; ++channel) {
+    v.whole[channel] = compareRegion(yours, reference, 0, 0, yours.width, yours.height, channel);
+  }
+  return v;
+}
+
+Image meanImage(const PixelMoments& m) {
+  Image image(m.width, m.height);
+  image.pixels = m.mean;
+  return image;
+}
+
+Image varianceImage(const PixelMoments& m) {
+  Image image(m.width, m.height);
+  image.pixels = m.varianceOfMean;
+  return image;
+}
+
+// Nearest-neighbour enlargement: the test images are small.
+Image enlarged(const Image& image, int factor) {
+  Image out(image.width * factor, image.height * factor);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) out.at(x, y) = image.at(x / factor, y / factor);
+  return out;
+}
+
+// Both images with one exposure: the reference's 90th percentile maps to 0.8
+// (lights and the sun saturate, the rest stays readable).
+float exposureOf(const Image& reference) {
+  std::vector<float> values;
+  for (const Color& c : reference.pixels) values.push_back(maxComponent(c));
+  if (values.empty()) return 1.0f;
+  std::nth_element(values.begin(), values.begin() + values.size() * 9 / 10, values.end());
+  const float p90 = values[values.size() * 9 / 10];
+  return p90 > 0.0f && std::isfinite(p90) ? 0.8f / p90 : 1.0f;
+}
+
+// Red where yours is brighter, blue where darker; full colour at the limit.
+Image zScoreMap(const Verdict& v, int width, int height) {
+  Image map(width, height);
+  const int blocksX = (width + kBlock - 1) / kBlock;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const float z = v.blockZ[size_t(y / kBlock) * size_t(blocksX) + size_t(x / kBlock)];
+      const float strength = std::min(1.0f, std::abs(z) / float(v.limit));
+      map.at(x, y) = z > 0 ? Color(strength, 0.0f, 0.0f) : Color(0.0f, 0.0f, strength);
+    }
+  }
+  return map;
+}
+
+std::string writeFailureImages(const ImageCase& c, const PixelMoments& yours, const PixelMoments& reference,
+                               const Verdict& v) {
+  const char* dirVariable = std::getenv("PATHLAB_IMAGE_FAILURES_DIR");
+  const std::filesystem::path dir = dirVariable && *dirVariable ? dirVariable : "image-failures";
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  const std::string stem = (dir / (c.suite + "-" + c.name)).string();
+  const Image referenceImage = meanImage(reference);
+  const float exposure = exposureOf(referenceImage);
+  auto exposed = [&](Image image) {
+    for (Color& p : image.pixels) p *= exposure;
+    return enlarged(image, 4);
+  };
+  try {
+    writeImage(exposed(meanImage(yours)), stem + "-yours.png");
+    writeImage(exposed(referenceImage), stem + "-reference.png");
+    writeImage(enlarged(zScoreMap(v, yours.width, yours.height), 4), stem + "-z.png");
+  } catch (const Error& e) {
+    return std::string("(could not write the pictures: ") + e.what() + ")";
+  }
+  return "pictures: " + stem + "-yours.png, " + stem + "-reference.png, " + stem +
+         "-z.png (red: yours brighter, blue: darker, full colour = significant)";
+}
+
+std::string describe(const Comparison& c) {
+  std::ostringstream s;
+  s.precision(4);
+  s << "yours " << c.yours << " (± " << std::sqrt(c.yoursVariance) << "), reference " << c.reference << " (± "
+    << std::sqrt(c.referenceVariance) << "), z = " << c.z();
+  return s.str();
+}
+
+}  // namespace
+
+void checkImage(ImageCase c) {
+  static const char* channels[] = {"red", "green", "blue"};
+  const std::hash<std::string> hash;
+  c.scene.indexPrimitives();
+  c.scene.render.seed = testSeed(hash(c.suite + "/" + c.name));
+  const PixelMoments yours = candidate::renderMoments(c.scene, c.options);
+
+  const std::string meanPath = referencePath(c, ".exr"), variancePath = referencePath(c, ".variance.exr");
+  if (const char* write = std::getenv("PATHLAB_WRITE_REFERENCE_IMAGES"); write && *write) {
+    // tools/make-reference-images: this judge links the reference solutions.
+    Scene scene = c.scene;
+    scene.render.samplesPerPixel *= kReferenceSppFactor;
+    scene.render.seed = 0x5eedf00dull + hash(c.name);
+    const PixelMoments reference = renderMoments(scene, c.options);
+    std::filesystem::create_directories(std::filesystem::path(meanPath).parent_path());
+    const ImageMetadata metadata{{"pathlab:spp", std::to_string(scene.render.samplesPerPixel)}};
+    writeImage(meanImage(reference), meanPath, metadata);
+    writeImage(varianceImage(reference), variancePath, metadata);
+    MESSAGE("wrote " << meanPath);
+  }
+  PixelMoments reference;
+  try {
+    const Image mean = readImage(meanPath), variance = readImage(variancePath);
+    reference = {mean.width, mean.height, 0, mean.pixels, variance.pixels, 0, true};
+  } catch (const Error& e) {
+    FAIL("the reference image is missing (tools/make-reference-images writes it): " << e.what());
+  }
+  REQUIRE_MESSAGE(reference.width == c.scene.render.width, "the reference image " << meanPath << " is stale");
+  REQUIRE_MESSAGE(reference.height == c.scene.render.height, "the reference image " << meanPath << " is stale");
+  REQUIRE_MESSAGE(reference.varianceOfMean.size() == reference.mean.size(), variancePath << " does not match");
+  REQUIRE_MESSAGE(yours.mean.size() == reference.mean.size(), "the candidate returned an image of the wrong size");
+
+  REQUIRE_MESSAGE((yours.usedBvh || c.scene.primitives.empty()),
+                  "task 3's BVH failed the framework's validation, so nothing was rendered (the candidate's "
+                  "output above says why)");
+  const Verdict v = compare(yours, reference);
+  INFO("image '" << c.name << "' (" << c.scene.render.width << "x" << c.scene.render.height << ", "
+                 << c.scene.render.samplesPerPixel << " samples per pixel, |z| limit " << v.limit << ")");
+  if (const char* statsPath = std::getenv("PATHLAB_IMAGE_STATS"); statsPath && *statsPath) {
+    // tools/image-test-seeds: the largest |z| per image under many seeds.
+    if (std::FILE* f = std::fopen(statsPath, "a")) {
+      double whole = 0;
+      for (const Comparison& w : v.whole) whole = std::max(whole, std::abs(w.z()));
+      std::fprintf(f, "%s/%s %.3f %.3f %.3f\n", c.suite.c_str(), c.name.c_str(), std::abs(v.worstZ), whole, v.limit);
+      std::fclose(f);
+    }
+  }
+  if (const char* always = std::getenv("PATHLAB_IMAGE_PICTURES"); always && std::string(always) == "always") {
+    MESSAGE(writeFailureImages(c, yours, reference, v));
+  }
+  if (yours.nonFinite > 0 || !v.pass()) {
+    std::ostringstream s;
+    if (yours.nonFinite > 0) s << yours.nonFinite << " samples were NaN or Inf.\n";
+    s << "worst 4x4 block: pixels x " << v.worstX << "-" << v.worstX + kBlock - 1 << ", y " << v.worstY << "-"
+      << v.worstY + kBlock - 1 << " (row 0 at the top), " << channels[v.worstChannel] << ": " << describe(v.worst)
+      << "\nwhole image, red:   " << describe(v.whole[0]) << "\nwhole image, green: " << describe(v.whole[1])
+      << "\nwhole image, blue:  " << describe(v.whole[2]) << "\n"
+      << writeFailureImages(c, yours, reference, v);
+    FAIL_CHECK(s.str());
+  }
+}
+
+}  // namespace pathlab::test

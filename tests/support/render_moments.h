@@ -1,0 +1,85 @@
+// What the image tests compare: each pixel's sample mean and the variance
+// of that mean, from a render taken exactly as render() takes it (same
+// camera samples, same random streams). The candidate computes them with the
+// student's task; the reference images were computed the same way with the
+// reference (tools/make-reference-images).
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <vector>
+
+#include "pathlab/parallel.h"
+#include "pathlab/render.h"
+
+namespace pathlab::test {
+
+// The render options an image test may vary (the rest are render()'s defaults).
+struct ImageOptions {
+  Integrator integrator = Integrator::Path;
+  bool russianRoulette = true;
+  EnvironmentSampling environmentSampling = EnvironmentSampling::Importance;
+};
+
+struct PixelMoments {
+  int width = 0, height = 0, spp = 0;
+  std::vector<Color> mean;            // per pixel, over its finite samples
+  std::vector<Color> varianceOfMean;  // the sample variance / the number of samples
+  uint64_t nonFinite = 0;             // NaN or Inf samples (left out of the moments)
+  bool usedBvh = false;               // false: task 3's tree was not usable, brute force ran instead
+};
+
+// scene.render gives the size, samples per pixel, seed, -m and -l.
+inline PixelMoments renderMoments(const Scene& scene, const ImageOptions& imageOptions, int threads = 0) {
+  RenderOptions options;
+  options.integrator = imageOptions.integrator;
+  options.russianRoulette = imageOptions.russianRoulette;
+  options.environmentSampling = imageOptions.environmentSampling;
+  options.progress = false;
+  const Accelerator accelerator(scene);
+  const Lights lights = Lights::fromScene(scene, options.environmentSampling);
+  const CameraBasis basis = cameraBasis(scene.camera);
+
+  PixelMoments m;
+  m.width = scene.render.width;
+  m.height = scene.render.height;
+  m.spp = scene.render.samplesPerPixel;
+  m.mean.assign(size_t(m.width) * size_t(m.height), Color(0.0f));
+  m.varianceOfMean.assign(m.mean.size(), Color(0.0f));
+  m.usedBvh = accelerator.usesBvh();
+  // A tree the framework refused fails the test anyway: no slow brute-force render.
+  if (!m.usedBvh && !scene.primitives.empty()) return m;
+  std::atomic<uint64_t> nonFinite{0};
+  forEachTile(m.width, m.height, 8, threads, [&](const Tile& tile) {
+    TraceContext context = makeTraceContext(scene, accelerator, lights, options);
+    for (int y = tile.begin.y; y < tile.end.y; ++y) {
+      for (int x = tile.begin.x; x < tile.end.x; ++x) {
+        context.pixel = {x, y};
+        glm::dvec3 sum(0.0), sumSquares(0.0);
+        int n = 0;
+        for (int i = 0; i < m.spp; ++i) {
+          const glm::dvec3 c(renderSample(context, options, basis, uint32_t(i)));
+          if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
+            ++nonFinite;
+            continue;
+          }
+          sum += c;
+          sumSquares += c * c;
+          ++n;
+        }
+        const size_t index = size_t(y) * size_t(m.width) + size_t(x);
+        if (n == 0) continue;
+        const glm::dvec3 mean = sum / double(n);
+        const glm::dvec3 variance =
+            n > 1 ? glm::max(glm::dvec3(0.0), (sumSquares - sum * mean) / double(n - 1)) : glm::dvec3(0.0);
+        m.mean[index] = Color(mean);
+        m.varianceOfMean[index] = Color(variance / double(n));
+      }
+    }
+  });
+  m.nonFinite = nonFinite.load();
+  return m;
+}
+
+}  // namespace pathlab::test
