@@ -278,7 +278,7 @@ Scene asymmetricScene() {
 }  // namespace
 
 TEST_CASE("T1.3 image: a wide, rolled view of an asymmetric scene matches the reference" *
-          grading(3, "compare your picture with the reference (paths below): upside down means raster y is not "
+          grading(3, "compare your picture with the reference (files named above): upside down means raster y is not "
                      "flipped, mirrored means right points the wrong way, squeezed means the aspect ratio; a "
                      "zoomed view means the field of view (vfov is in degrees, the full vertical angle)")) {
   checkImage({"01-camera-rays", "asymmetric", asymmetricScene(), {.integrator = Integrator::Preview}});

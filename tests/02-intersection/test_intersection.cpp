@@ -568,7 +568,7 @@ Scene surfacesScene() {
 }  // namespace
 
 TEST_CASE("T2.3 image: triangles from both sides, vertex normals and spheres from inside and out" *
-          grading(4, "compare your pictures with the references (paths below): in the normals view a wrong colour "
+          grading(4, "compare your pictures with the references (files named above): in the normals view a wrong colour "
                      "is a wrong normal (not interpolated, not unit, or not turned to the vertex normals' side); "
                      "holes are missed hits (culled back faces, a sphere from inside)")) {
   checkImage({"02-intersection", "surfaces-normals", surfacesScene(), {.integrator = Integrator::Normals}});

@@ -422,7 +422,7 @@ Scene flatImageScene() {
 }  // namespace
 
 TEST_CASE("T3.4 image: a scan-sized mesh with shadows, and flat and coincident primitives" *
-          grading(4, "compare your pictures with the references (paths below): holes or speckles are missed "
+          grading(4, "compare your pictures with the references (files named above): holes or speckles are missed "
                      "closest hits (a child skipped, a box test too tight); missing or wrong shadows are any-hit "
                      "(intersectAny) answers; a hang or a crash, the build on flat or coincident primitives")) {
   checkImage({"03-bvh", "scan", scanImageScene(), {.integrator = Integrator::Direct}});

@@ -445,14 +445,14 @@ Scene environmentScene() {
 }  // namespace
 
 TEST_CASE("T4.4 image: point, area and one-sided lights on back-wound and smooth-normal surfaces" *
-          grading(4, "compare your picture with the reference (paths below): a dark back-wound quad means the "
+          grading(4, "compare your picture with the reference (files named above): a dark back-wound quad means the "
                      "cosine uses a normal that is not turned towards wo (use bsdf.normal()); light left of the "
                      "panel means emitters are two-sided; a wrong brightness everywhere, a missing 1/pi or pdf")) {
   checkImage({"04-direct-lighting", "lights", lightsScene(), {.integrator = Integrator::Direct}});
 }
 
 TEST_CASE("T4.4 image: an environment map lights the scene like any other light" *
-          grading(3, "compare your picture with the reference (paths below): black surfaces under a sky mean "
+          grading(3, "compare your picture with the reference (files named above): black surfaces under a sky mean "
                      "the environment is not sampled (context.lights.environment, recipe step 4); the sample's "
                      "pdfSolidAngle is already in solid angle")) {
   checkImage({"04-direct-lighting", "environment", environmentScene(), {.integrator = Integrator::Direct}});

@@ -255,7 +255,7 @@ Scene skyScene() {
 }  // namespace
 
 TEST_CASE("T5.2 image: a Cornell box with a mirror and a glass sphere, and a sky seen in a mirror" *
-          grading(4, "compare your picture with the reference (paths below): a black or dark mirror or glass "
+          grading(4, "compare your picture with the reference (files named above): a black or dark mirror or glass "
                      "means emission (or the sky) is not counted after delta bounces; walls too bright means "
                      "emission counted after diffuse bounces as well (light sampling already covered it)")) {
   checkImage({"05-path-tracing", "cornell-mirror-glass", cornellBox(48, 36, 64, 4, true), {}});
@@ -263,7 +263,7 @@ TEST_CASE("T5.2 image: a Cornell box with a mirror and a glass sphere, and a sky
 }
 
 TEST_CASE("T5.2 image: -m 0, 1, 2 and 3 bounces without roulette" *
-          grading(3, "compare your pictures with the references (paths below): -m 0 shows only emitters, -m 1 adds "
+          grading(3, "compare your pictures with the references (files named above): -m 0 shows only emitters, -m 1 adds "
                      "direct light, each further bounce adds one more; a picture matching the next or previous "
                      "depth is an off-by-one")) {
   for (int depth = 0; depth <= 3; ++depth) {

@@ -331,7 +331,7 @@ Scene glassUnderSkyScene() {
 }  // namespace
 
 TEST_CASE("T6.5 image: mirror and glass spheres in a Cornell box, and glass, a slab and a mirror under a sky" *
-          grading(4, "compare your pictures with the references (paths below): glass too dark or too bright "
+          grading(4, "compare your pictures with the references (files named above): glass too dark or too bright "
                      "means its weight is not 1 (Fresnel chosen with probability F cancels F); a dark rim inside "
                      "the slab means total internal reflection is missing; a visible index-1 sphere, a bent ray")) {
   checkImage({"06-mirror-glass", "cornell-mirror-glass", cornellBox(48, 36, 64, 6, true), {}});

@@ -336,7 +336,7 @@ Scene zenithScene() {
 }  // namespace
 
 TEST_CASE("T7.5 image: a sky with a one-texel sun lights a scene, seen across the seam and at the zenith" *
-          grading(4, "compare your pictures with the references (paths below): a seam line in the sky means u "
+          grading(4, "compare your pictures with the references (files named above): a seam line in the sky means u "
                      "does not wrap; a wrong zenith, a pole problem; wrong brightness on the spheres means samples "
                      "and environmentPdf disagree (the pdf in solid angle divides by 2 pi^2 sin(theta))")) {
   checkImage({"07-environment", "sky-lit", skyLitScene(true), {.integrator = Integrator::Direct}});
@@ -344,7 +344,7 @@ TEST_CASE("T7.5 image: a sky with a one-texel sun lights a scene, seen across th
 }
 
 TEST_CASE("T7.3 image: the same sky sampled uniformly over the sphere" *
-          grading(2, "compare your picture with the reference (paths below): uniform directions have "
+          grading(2, "compare your picture with the reference (files named above): uniform directions have "
                      "pdf 1 / (4 pi) over the whole sphere; too bright or too dark means sampler and pdf disagree")) {
   checkImage({"07-environment", "sky-lit-uniform", skyLitScene(false),
               {.integrator = Integrator::Direct, .environmentSampling = EnvironmentSampling::Uniform}});
