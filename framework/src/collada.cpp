@@ -2,14 +2,22 @@
 // "CMU462", identical in the CS184 "CGL" copies): meshes (polylist and
 // triangles), node transforms, analytic spheres, point and area lights,
 // emission, diffuse / mirror / glass materials, the camera.
+//
+// Leniencies, each reported by one "warning:" line per file on stderr:
+// node matrices with fewer than 16 numbers (as the course's viewer reads
+// them: missing numbers are 0), and the CS184 <microfacet> and <refraction>
+// materials, approximated by the closest PathLab material.
 #include <pugixml.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <set>
 #include <sstream>
+#include <string_view>
 
 #include "pathlab/aabb.h"
 #include "pathlab/error.h"
@@ -18,15 +26,86 @@
 namespace pathlab {
 namespace {
 
+// A message line safe to print: names in the file (and the file's own name)
+// can hold anything, so control characters (C0, DEL, C1, the Unicode line
+// separators and bidirectional overrides) and bytes that are not UTF-8
+// become \xNN escapes; other UTF-8 passes through.
+std::string printable(std::string_view text) {
+  std::string out;
+  auto escape = [&](unsigned char byte) {
+    char buffer[5];
+    std::snprintf(buffer, sizeof buffer, "\\x%02x", byte);
+    out += buffer;
+  };
+  for (size_t i = 0; i < text.size();) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    if (byte < 0x80) {
+      if (byte < 0x20 || byte == 0x7f) escape(byte);
+      else out += char(byte);
+      ++i;
+      continue;
+    }
+    // A UTF-8 sequence: its length, code point and validity.
+    const size_t length = byte >= 0xf0 ? 4 : byte >= 0xe0 ? 3 : byte >= 0xc0 ? 2 : 0;
+    uint32_t code = length == 4 ? byte & 0x07u : length == 3 ? byte & 0x0fu : byte & 0x1fu;
+    bool valid = length != 0 && i + length <= text.size();
+    for (size_t k = 1; valid && k < length; ++k) {
+      const auto next = static_cast<unsigned char>(text[i + k]);
+      valid = (next & 0xc0) == 0x80;
+      code = (code << 6) | (next & 0x3fu);
+    }
+    static constexpr uint32_t kSmallest[5] = {0, 0, 0x80, 0x800, 0x10000};
+    valid = valid && code >= kSmallest[length] && code <= 0x10ffff && !(code >= 0xd800 && code <= 0xdfff);
+    const bool control = code <= 0x9f || code == 0x2028 || code == 0x2029 || (code >= 0x202a && code <= 0x202e) ||
+                         (code >= 0x2066 && code <= 0x2069);
+    if (!valid || control) {
+      escape(byte);  // one byte at a time: the rest follow as escapes or text
+      ++i;
+      continue;
+    }
+    out.append(text.substr(i, length));
+    i += length;
+  }
+  return out;
+}
+
+void warn(const std::string& file, const std::string& what) {
+  std::fputs(("warning: " + printable(file + ": " + what) + "\n").c_str(), stderr);
+}
+
+// "1 more node", "2 more nodes"
+std::string count(size_t n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
+
+// "(0.93 0.79 0.40)"
+std::string formatted(const Vec3& v) {
+  std::string out = "(";
+  for (int i = 0; i < 3; ++i) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.2f", double(std::abs(v[i]) < 5e-3f ? 0.0f : v[i]));
+    if (i) out += ' ';
+    out += buffer;
+  }
+  return out + ")";
+}
+
+// A 3x3 part that maps no volume to zero volume, relative to its columns'
+// lengths (so uniformly scaled or tiny transforms still count as usable).
+bool usableLinearPart(const glm::mat4& m) {
+  const glm::mat3 linear(m);
+  const float lengths = glm::length(linear[0]) * glm::length(linear[1]) * glm::length(linear[2]);
+  const float det = glm::determinant(linear);
+  return std::isfinite(lengths) && std::isfinite(det) && lengths > 0.0f && std::abs(det) > 1e-6f * lengths;
+}
+
 class ColladaReader {
  public:
   explicit ColladaReader(const std::string& path) : file_(path) {
     pugi::xml_parse_result parsed = document_.load_file(path.c_str());
     if (!parsed) {
-      throw Error(path + ": invalid XML at byte " + std::to_string(parsed.offset) + ": " + parsed.description());
+      throw Error(printable(path + ": invalid XML at byte " + std::to_string(parsed.offset) + ": " + parsed.description()));
     }
     root_ = document_.child("COLLADA");
-    if (!root_) throw Error(path + ": not a COLLADA file (no <COLLADA> element)");
+    if (!root_) throw Error(printable(path + ": not a COLLADA file (no <COLLADA> element)"));
     indexIds(root_);
   }
 
@@ -34,17 +113,18 @@ class ColladaReader {
     scene_.source = file_;
     pugi::xml_node visualScene = resolve(root_.child("scene").child("instance_visual_scene").attribute("url").value(),
                                          "scene/instance_visual_scene");
-    for (pugi::xml_node node : visualScene.children("node")) readNode(node, glm::mat4(1.0f));
+    for (pugi::xml_node node : visualScene.children("node")) readNode(node, glm::mat4(1.0f), {});
     placeLights();
     if (scene_.meshes.empty() && scene_.spheres.empty()) fail("library_visual_scenes", "the scene has no geometry");
     scene_.indexPrimitives();
     placeCamera();
+    reportRepairs();
     return std::move(scene_);
   }
 
  private:
   [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-    throw Error(file_ + ": " + where + ": " + what);
+    throw Error(printable(file_ + ": " + where + ": " + what));
   }
 
   void indexIds(pugi::xml_node node) {
@@ -127,6 +207,7 @@ class ColladaReader {
       }
     }
     if (pugi::xml_node technique = courseTechnique(effect)) {
+      const std::string profile = technique.attribute("profile").value();
       if (pugi::xml_node emission = technique.child("emission")) {
         m.emission = color(emission.child("radiance"), effectWhere + "/emission/radiance");
         m.albedo = Color(0.0f);  // the course's emitters reflect nothing
@@ -139,12 +220,68 @@ class ColladaReader {
         m.transmittance = glm::clamp(color(glass.child("transmittance"), effectWhere + "/glass/transmittance"), 0.0f, 1.0f);
         m.ior = numbers(glass.child("ior"), effectWhere + "/glass/ior", 1)[0];
         if (!(m.ior > 0.0f)) fail(effectWhere + "/glass/ior", "must be positive");
+      } else if (pugi::xml_node microfacet = technique.child("microfacet")) {
+        approximateMicrofacet(m, microfacet, effectWhere, profile);
+      } else if (pugi::xml_node refraction = technique.child("refraction")) {
+        // CS184's RefractionBSDF: refraction only, no Fresnel reflection.
+        // Glass that reflects nothing is the closest; it still loses the
+        // Fresnel-reflected share instead of refracting it.
+        m.type = MaterialType::Glass;
+        m.albedo = Color(0.0f);
+        m.transmittance =
+            glm::clamp(color(refraction.child("transmittance"), effectWhere + "/refraction/transmittance"), 0.0f, 1.0f);
+        m.ior = numbers(refraction.child("ior"), effectWhere + "/refraction/ior", 1)[0];
+        if (!(m.ior > 0.0f)) fail(effectWhere + "/refraction/ior", "must be positive");
+        noteApproximation(effectWhere, "has a " + profile + " <refraction> material, which PathLab does not have; "
+                                       "it is rendered as glass that reflects nothing");
       } else if (pugi::xml_node other = technique.first_child()) {
-        fail(effectWhere, std::string("material type <") + other.name() + "> is not supported (diffuse, emission, mirror, glass)");
+        fail(effectWhere, std::string("material type <") + other.name() +
+                              "> is not supported (diffuse, emission, mirror, glass; microfacet and refraction are "
+                              "approximated)");
       }
     }
     scene_.materials.push_back(m);
     return materials_[url] = uint32_t(scene_.materials.size() - 1);
+  }
+
+  // CS184's <microfacet> (alpha, eta, k): a rough conductor. PathLab has no
+  // glossy material, so it becomes the closest of its own: a mirror when
+  // nearly smooth (alpha <= 0.1, where the lobe is a blurred reflection),
+  // otherwise diffuse (the lobe spreads over the hemisphere). Either way in
+  // the metal's colour, its Fresnel reflectance at normal incidence
+  // ((eta - 1)^2 + k^2) / ((eta + 1)^2 + k^2) per channel: the effect's
+  // Blender diffuse colour says nothing about the metal. Without eta and k,
+  // the effect's diffuse colour is kept.
+  void approximateMicrofacet(Material& m, pugi::xml_node microfacet, const std::string& effectWhere,
+                             const std::string& profile) {
+    const std::string here = effectWhere + "/microfacet";
+    std::string what = "has a " + profile + " <microfacet> material";
+    float alpha = 0.5f;
+    if (pugi::xml_node a = microfacet.child("alpha")) {
+      alpha = numbers(a, here + "/alpha", 1)[0];
+      if (!(alpha >= 0.0f)) fail(here + "/alpha", "must not be negative");
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, " (alpha %g)", double(alpha));
+      what += buffer;
+    }
+    what += ", which PathLab does not have; it is rendered as ";
+    const bool smooth = alpha <= 0.1f;
+    m.type = smooth ? MaterialType::Mirror : MaterialType::Diffuse;
+    what += smooth ? "a mirror" : "diffuse";
+    if (microfacet.child("eta") && microfacet.child("k")) {
+      const Color eta = color(microfacet.child("eta"), here + "/eta"), k = color(microfacet.child("k"), here + "/k");
+      const Color k2 = k * k;
+      m.albedo = glm::clamp(((eta - 1.0f) * (eta - 1.0f) + k2) / ((eta + 1.0f) * (eta + 1.0f) + k2), 0.0f, 1.0f);
+      what += " in the metal's colour at normal incidence " + formatted(m.albedo);
+    } else {
+      what += " in the effect's diffuse colour " + formatted(m.albedo);
+    }
+    noteApproximation(effectWhere, what);
+  }
+
+  void noteApproximation(const std::string& effectWhere, const std::string& what) {
+    if (!approximatedEffects_.insert(effectWhere).second) return;
+    if (approximation_.empty()) approximation_ = effectWhere + " " + what;
   }
 
   // ---- geometry -------------------------------------------------------------
@@ -176,8 +313,11 @@ class ColladaReader {
     return s;
   }
 
-  void readMesh(pugi::xml_node mesh, const glm::mat4& worldFromObject, const std::map<std::string, std::string>& bindings,
-                const std::string& where) {
+  // `flattened`: the transform is singular (a short <matrix>, see
+  // localTransform). Returns whether anything was left out for that.
+  bool readMesh(pugi::xml_node mesh, const glm::mat4& worldFromObject, const std::map<std::string, std::string>& bindings,
+                const std::string& where, bool flattened) {
+    bool leftOut = false;
     for (pugi::xml_node primitives : mesh.children()) {
       const std::string kind = primitives.name();
       if (kind != "polylist" && kind != "triangles") continue;
@@ -241,12 +381,35 @@ class ColladaReader {
       auto bound = bindings.find(symbol);
       if (bound == bindings.end()) fail(here, "material symbol \"" + symbol + "\" is not bound by the node");
       out.material = material(bound->second, here);
-      transformMesh(out, worldFromObject);
+      if (flattened) {
+        // Flattened, as the course's viewer would draw it: no normal matrix
+        // exists (so no vertex normals), and triangles that lost their area
+        // (all but a millionth of what the transform's scale would give
+        // them, which is the exporter's rounding noise) cannot be seen.
+        out.normals.clear();
+        const std::vector<Point3> local = out.positions;
+        transformMesh(out, worldFromObject);
+        const float scale = std::max({glm::length(Vec3(worldFromObject[0])), glm::length(Vec3(worldFromObject[1])),
+                                      glm::length(Vec3(worldFromObject[2]))});
+        auto area = [](const std::vector<Point3>& points, const glm::uvec3& t) {
+          return glm::length(glm::cross(points[t.y] - points[t.x], points[t.z] - points[t.x]));
+        };
+        const size_t before = out.triangles.size();
+        std::erase_if(out.triangles, [&](const glm::uvec3& t) {
+          return !(area(out.positions, t) > 1e-6f * scale * scale * area(local, t));
+        });
+        leftOut |= out.triangles.size() < before;
+        if (out.triangles.empty()) continue;
+      } else {
+        transformMesh(out, worldFromObject);
+      }
       scene_.meshes.push_back(std::move(out));
     }
+    return leftOut;
   }
 
-  void readGeometry(pugi::xml_node instance, const glm::mat4& worldFromObject) {
+  // Returns whether a flattened transform left something out (readMesh).
+  bool readGeometry(pugi::xml_node instance, const glm::mat4& worldFromObject, bool flattened) {
     pugi::xml_node geometry = resolve(instance.attribute("url").value(), "instance_geometry");
     const std::string where = std::string("geometry \"") + geometry.attribute("id").value() + "\"";
     std::map<std::string, std::string> bindings;  // symbol -> material url
@@ -254,30 +417,59 @@ class ColladaReader {
       bindings[m.attribute("symbol").value()] = m.attribute("target").value();
     }
     if (pugi::xml_node mesh = geometry.child("mesh")) {
-      readMesh(mesh, worldFromObject, bindings, where);
-      return;
+      return readMesh(mesh, worldFromObject, bindings, where, flattened);
     }
     pugi::xml_node sphere = courseTechnique(geometry).child("sphere");
     if (!sphere) fail(where, "neither a <mesh> nor a course <sphere>");
     if (bindings.empty()) fail(where, "the sphere has no bound material");
     const float radius = numbers(sphere.child("radius"), where + "/sphere/radius", 1)[0];
     const float scale = glm::length(Vec3(worldFromObject[0]));
+    // A sphere has no flattened form: it stays a sphere at the node's origin,
+    // scaled by the x axis as always, unless that axis is gone too.
+    if (flattened && !(scale > 0.0f)) return true;
     if (!(radius > 0.0f) || !(scale > 0.0f)) fail(where + "/sphere/radius", "must be positive");
     scene_.spheres.push_back(Sphere{Point3(worldFromObject * glm::vec4(0, 0, 0, 1)), radius * scale,
                                     material(bindings.begin()->second, where)});
+    return false;
   }
 
   // ---- nodes, lights, camera -------------------------------------------------------
 
-  glm::mat4 localTransform(pugi::xml_node node, const std::string& where) const {
+  // `flattens` is set when a short <matrix> (below) makes the node's 3x3
+  // part singular.
+  glm::mat4 localTransform(pugi::xml_node node, const std::string& where, bool& shortMatrix, bool& flattens) {
     glm::mat4 m(1.0f);
     for (pugi::xml_node t : node.children()) {
       const std::string kind = t.name();
       if (kind == "matrix") {
-        std::vector<float> v = numbers(t, where + "/matrix", 16);
+        std::vector<float> v = numbers(t, where + "/matrix");
+        if (v.size() > 16) fail(where + "/matrix", "expected 16 numbers, got " + std::to_string(v.size()));
+        const size_t count = v.size();
+        // Fewer than 16 (a course Cornell box's camera has 15): the course's
+        // viewer reads the matrix with a stream, which leaves the missing
+        // numbers at 0. So do we, with a warning. PathLab's node transforms
+        // are affine, so the bottom row (where a 15th or 16th number is
+        // missing; Blender always writes 0 0 0 1) is not used: it is kept at
+        // 0 0 0 1 rather than 0 0 0 0, which would also drop a parent's
+        // translation from nested nodes. So 12 to 15 numbers change nothing.
+        // Fewer zero part of the 3x3 and translation; if that makes the 3x3
+        // singular, the node (and its children) are flattened as the viewer
+        // would flatten them: meshes lose the triangles that lose their
+        // area (readMesh), spheres stay spheres, and a camera there is
+        // framed from the scene's bounds (placeCamera).
+        v.resize(16, 0.0f);
         glm::mat4 local;
         for (int r = 0; r < 4; ++r)
           for (int c = 0; c < 4; ++c) local[c][r] = v[size_t(r * 4 + c)];  // COLLADA is row-major
+        if (count < 16) {
+          local = glm::mat4(glm::vec4(local[0].x, local[0].y, local[0].z, 0.0f),
+                            glm::vec4(local[1].x, local[1].y, local[1].z, 0.0f),
+                            glm::vec4(local[2].x, local[2].y, local[2].z, 0.0f),
+                            glm::vec4(local[3].x, local[3].y, local[3].z, 1.0f));
+          shortMatrix = true;
+          flattens = flattens || !usableLinearPart(local);
+          if (shortMatrices_++ == 0) shortMatrix_ = {where, count};
+        }
         m = m * local;
       } else if (kind == "translate") {
         std::vector<float> v = numbers(t, where + "/translate", 3);
@@ -293,18 +485,34 @@ class ColladaReader {
     return m;
   }
 
-  void readNode(pugi::xml_node node, const glm::mat4& parent) {
+  // What the node's ancestors did to it.
+  struct Inherited {
+    bool shortMatrix = false;  // some ancestor's <matrix> was short
+    bool flattened = false;    // ... and made the transform singular
+  };
+
+  void readNode(pugi::xml_node node, const glm::mat4& parent, Inherited inherited) {
     const std::string where = std::string("node \"") + node.attribute("id").value() + "\"";
-    const glm::mat4 worldFromObject = parent * localTransform(node, where);
-    for (pugi::xml_node instance : node.children("instance_geometry")) readGeometry(instance, worldFromObject);
+    bool shortMatrix = false, flattens = false;
+    const glm::mat4 worldFromObject = parent * localTransform(node, where, shortMatrix, flattens);
+    inherited.shortMatrix |= shortMatrix;
+    inherited.flattened |= flattens;
+    bool leftOut = false;
+    for (pugi::xml_node instance : node.children("instance_geometry")) {
+      leftOut |= readGeometry(instance, worldFromObject, inherited.flattened);
+    }
+    if (leftOut && flattenedNodes_++ == 0) flattenedNode_ = where;
     for (pugi::xml_node instance : node.children("instance_light")) {
-      lights_.push_back({resolve(instance.attribute("url").value(), where + "/instance_light"), worldFromObject});
+      lights_.push_back(
+          {resolve(instance.attribute("url").value(), where + "/instance_light"), worldFromObject, inherited.flattened});
     }
     for (pugi::xml_node instance : node.children("instance_camera")) {
       camera_ = resolve(instance.attribute("url").value(), where + "/instance_camera");
       cameraFromWorld_ = worldFromObject;
+      cameraNode_ = where;
+      cameraShortMatrix_ = inherited.shortMatrix;
     }
-    for (pugi::xml_node child : node.children("node")) readNode(child, worldFromObject);
+    for (pugi::xml_node child : node.children("node")) readNode(child, worldFromObject, inherited);
   }
 
   // The course's files describe the ceiling light twice: as an emissive mesh
@@ -315,10 +523,10 @@ class ColladaReader {
     bool emissiveGeometry = false;
     for (const TriangleMesh& m : scene_.meshes) emissiveGeometry |= scene_.materials[m.material].isEmissive();
     for (const Sphere& s : scene_.spheres) emissiveGeometry |= scene_.materials[s.material].isEmissive();
-    for (const auto& [light, worldFromLight] : lights_) {
+    for (const auto& [light, worldFromLight, flattened] : lights_) {
       const std::string where = std::string("light \"") + light.attribute("id").value() + "\"";
       if (pugi::xml_node area = courseTechnique(light).child("area")) {
-        if (emissiveGeometry) continue;
+        if (emissiveGeometry || flattened) continue;  // a flattened quad has no area
         Material emitter;
         emitter.name = where;
         emitter.albedo = Color(0.0f);
@@ -368,14 +576,21 @@ class ColladaReader {
       }
       if (!(vfov > 0.0f && vfov < 180.0f)) fail("camera", "field of view out of range");
       camera.vfovDegrees = vfov;
-      forward = glm::normalize(Vec3(cameraFromWorld_ * glm::vec4(0, 0, -1, 0)));
-      up = glm::normalize(Vec3(cameraFromWorld_ * glm::vec4(0, 1, 0, 0)));
     }
     Aabb bounds;
     for (const TriangleMesh& m : scene_.meshes)
       for (const Point3& p : m.positions) bounds.grow(p);
     for (const Sphere& s : scene_.spheres) bounds.grow(s.center - Vec3(s.radius)), bounds.grow(s.center + Vec3(s.radius));
     const Point3 center = bounds.centroid();
+    if (camera_) {
+      const Vec3 cameraForward(cameraFromWorld_ * glm::vec4(0, 0, -1, 0)), cameraUp(cameraFromWorld_ * glm::vec4(0, 1, 0, 0));
+      if (usableLinearPart(cameraFromWorld_) && glm::length(glm::cross(cameraForward, cameraUp)) > 0.0f) {
+        forward = glm::normalize(cameraForward);
+        up = glm::normalize(cameraUp);
+      } else {
+        frameFromBounds(bounds, forward, up);
+      }
+    }
     const Vec3 right = glm::normalize(glm::cross(forward, up));
     const Vec3 trueUp = glm::cross(right, forward);
     const float tanHalf = std::tan(glm::radians(camera.vfovDegrees) * 0.5f);
@@ -394,15 +609,85 @@ class ColladaReader {
     scene_.render.height = std::max(1, int(std::lround(float(scene_.render.width) / aspect)));
   }
 
+  // A camera whose transform gives no direction (singular or not finite):
+  // like the course's viewer, frame it from the scene's bounds. It looks from
+  // where the file puts it (the translation, if that is finite and outside
+  // the bounds: a position zeroed by a short matrix is often inside) at the
+  // bounds' centre, or else along the file's horizontal view axis (-z for
+  // y-up files, +y, Blender's front view, for z-up ones), with the file's
+  // <up_axis> up.
+  void frameFromBounds(const Aabb& bounds, Vec3& forward, Vec3& up) {
+    const std::string axis = root_.child("asset").child_value("up_axis");
+    up = axis == "Z_UP" ? Vec3(0, 0, 1) : axis == "X_UP" ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    forward = axis == "Z_UP" ? Vec3(0, 1, 0) : Vec3(0, 0, -1);
+    const Point3 position(cameraFromWorld_[3]);
+    const bool outside = glm::any(glm::lessThan(position, bounds.min)) || glm::any(glm::greaterThan(position, bounds.max));
+    if (outside && std::isfinite(position.x) && std::isfinite(position.y) && std::isfinite(position.z)) {
+      forward = glm::normalize(bounds.centroid() - position);
+    }
+    if (!(glm::length(glm::cross(forward, up)) > 1e-3f)) up = std::abs(forward.z) < 0.9f ? Vec3(0, 0, 1) : Vec3(0, 1, 0);
+    cameraFraming_ = "so it is framed from the scene's bounds: it looks along " + formatted(forward) +
+                     " at their centre, from the distance where they fill the view";
+  }
+
+  // One warning line per kind of repair, after a successful load.
+  void reportRepairs() const {
+    bool cameraReported = cameraFraming_.empty();
+    if (shortMatrices_) {
+      std::string line = shortMatrix_.node + "/matrix has " + std::to_string(shortMatrix_.count) +
+                         " numbers, not 16; the missing ones are taken as 0";
+      if (shortMatrices_ > 1) line += " (as are those of " + count(shortMatrices_ - 1, "more node") + ")";
+      if (!cameraReported && cameraShortMatrix_) {
+        line += ", which leaves the camera" + (cameraNode_ == shortMatrix_.node ? "" : " of " + cameraNode_) +
+                " no usable direction, " + cameraFraming_;
+        cameraReported = true;
+      }
+      if (flattenedNodes_) {
+        line += "; that flattens the geometry of " + flattenedNode_;
+        if (flattenedNodes_ > 1) line += " (and of " + count(flattenedNodes_ - 1, "more node") + ")";
+        line += ", and what has no area left is left out";
+      }
+      warn(file_, line);
+    }
+    if (!cameraReported) warn(file_, cameraNode_ + ": the camera's transform gives no usable direction, " + cameraFraming_);
+    if (!approximation_.empty()) {
+      std::string line = approximation_;
+      if (approximatedEffects_.size() > 1) {
+        const size_t n = approximatedEffects_.size() - 1;
+        line += " (" + count(n, "more effect") + (n == 1 ? " is" : " are") + " approximated likewise)";
+      }
+      warn(file_, line);
+    }
+  }
+
   std::string file_;
   pugi::xml_document document_;
   pugi::xml_node root_;
   std::map<std::string, pugi::xml_node> ids_;
   std::map<std::string, uint32_t> materials_;
-  std::vector<std::pair<pugi::xml_node, glm::mat4>> lights_;
+  struct LightInstance {
+    pugi::xml_node light;
+    glm::mat4 worldFromLight;
+    bool flattened;
+  };
+  std::vector<LightInstance> lights_;
   pugi::xml_node camera_;
   glm::mat4 cameraFromWorld_{1.0f};
+  std::string cameraNode_;
+  bool cameraShortMatrix_ = false;
   Scene scene_;
+
+  // Repairs, reported once per file by reportRepairs().
+  struct ShortMatrix {
+    std::string node;
+    size_t count = 0;
+  } shortMatrix_;            // the first short <matrix>
+  size_t shortMatrices_ = 0;
+  std::string flattenedNode_;  // the first node a short matrix flattened something out of
+  size_t flattenedNodes_ = 0;
+  std::string cameraFraming_;  // how the camera was framed from the bounds, if it was
+  std::string approximation_;  // the first approximated material
+  std::set<std::string> approximatedEffects_;
 };
 
 }  // namespace

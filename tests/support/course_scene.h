@@ -3,16 +3,30 @@
 // Z-up, polylists with VERTEX/NORMAL/TEXCOORD inputs, node matrices, an
 // <area> light in an <extra> block, analytic spheres that are geometries
 // with no mesh. `profile` is "CMU462" (Scotty3D) or "CGL" (CS184).
+// The other options write the variants the course's viewers accept and
+// PathLab repairs with a warning; their defaults write the files as shipped.
 #pragma once
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace pathlab::test {
 
 struct CourseBoxOptions {
   std::string profile = "CMU462";
   bool mirrorAndGlass = true;  // CBspheres.dae; false: CBspheres_lambertian.dae
+  // The camera node's <matrix>: fewer numbers write only the first ones (a
+  // Cornell box the course ships has 15), more append 0s.
+  int cameraMatrixNumbers = 16;
+  int backWallMatrixNumbers = 16;  // the same for the back wall's node
+  // CS184 hw3-2: the second sphere (chrome, or the second diffuse one) is a
+  // gold <microfacet> (gold's eta and k), of roughness `microfacetAlpha`.
+  bool microfacet = false;
+  float microfacetAlpha = 0.5f;
+  // CS184: the first sphere (glass, or the first diffuse one) is a
+  // <refraction> material (RefractionBSDF: refraction only).
+  bool refraction = false;
 };
 
 inline std::string courseCornellBox(const CourseBoxOptions& options = {}) {
@@ -33,6 +47,17 @@ inline std::string courseCornellBox(const CourseBoxOptions& options = {}) {
       "-1 2.69452e-14 1.50996e-7 -2.62268e-8 1.50996e-7 1.62921e-7 1 0 2.34488e-15 1 -1.62921e-7 0 0 0 0 1";
   const std::string raisedWallMatrix =
       "-1 2.69452e-14 1.50996e-7 -2.62268e-8 1.50996e-7 1.62921e-7 1 0.004315853 2.34488e-15 1 -1.62921e-7 0 0 0 0 1";
+  auto firstNumbers = [](const std::string& matrix, int count) {
+    std::istringstream numbers(matrix);
+    std::vector<std::string> v;
+    for (std::string n; numbers >> n;) v.push_back(n);
+    v.resize(size_t(count), "0");
+    std::string out;
+    for (const std::string& n : v) out += (out.empty() ? "" : " ") + n;
+    return out;
+  };
+  const std::string cameraMatrix = firstNumbers("-1 0 0 0 0 0 1 3 0 1 0 0 0 0 0 1", options.cameraMatrixNumbers);
+  const std::string backWallMatrix = firstNumbers(raisedWallMatrix, options.backWallMatrixNumbers);
   struct Wall {
     const char* name;
     const char* positions;
@@ -45,7 +70,7 @@ inline std::string courseCornellBox(const CourseBoxOptions& options = {}) {
       {"floor", "1 0 -1 -1 0 -1 -1 0 1 1 0 1", "0 1 0", wallMatrix.c_str()},
       {"leftWall", "-1 1.5 -1 -1 1.5 1 -1 0 1 -1 0 -1", "1 0 0", wallMatrix.c_str()},
       {"rightWall", "1 1.5 1 1 1.5 -1 1 0 -1 1 0 1", "-1 0 0", wallMatrix.c_str()},
-      {"backWall", "1 1.5 -1 -1 1.5 -1 -1 0 -1 1 0 -1", "0 0 1", raisedWallMatrix.c_str()},
+      {"backWall", "1 1.5 -1 -1 1.5 -1 -1 0 -1 1 0 -1", "0 0 1", backWallMatrix.c_str()},
   };
 
   dae << "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
@@ -76,8 +101,18 @@ inline std::string courseCornellBox(const CourseBoxOptions& options = {}) {
   effect("rightWall", "0.2 0.2 0.6");
   effect("backWall", "0.6 0.6 0.6");
   dae << "</library_effects>\n<library_materials>\n";
-  const std::string sphereEffects[2] = {options.mirrorAndGlass ? "glass" : "sphereA",
-                                        options.mirrorAndGlass ? "chrome" : "sphereB"};
+  if (options.refraction) {
+    effect("refraction", "0.64 0.64 0.64",
+           "<refraction><transmittance>1 1 1</transmittance><roughness>0</roughness><ior>1.45</ior></refraction>");
+  }
+  if (options.microfacet) {
+    effect("gold", "0.64 0.64 0.64",
+           "<microfacet><alpha>" + std::to_string(options.microfacetAlpha) +
+               "</alpha><eta>0.21646 0.42833 1.3284</eta><k>3.2390 2.4599 1.8661</k></microfacet>");
+  }
+  const std::string sphereEffects[2] = {
+      options.refraction ? "refraction" : options.mirrorAndGlass ? "glass" : "sphereA",
+      options.microfacet ? "gold" : options.mirrorAndGlass ? "chrome" : "sphereB"};
   for (const std::string& name : sphereEffects) {
     dae << "<material id=\"" << name << "\" name=\"" << name << "\"><instance_effect url=\"#" << name
         << "-effect\"/></material>\n";
@@ -123,7 +158,7 @@ inline std::string courseCornellBox(const CourseBoxOptions& options = {}) {
       << "</matrix>" << instance("Sphere1-data", sphereEffects[0]) << "</node>\n"
       << "<node id=\"Sphere2\" name=\"Sphere2\" type=\"NODE\"><matrix sid=\"transform\">1 0 0 0.4 0 1 0 -0.3 0 0 1 0.3 0 0 0 1"
       << "</matrix>" << instance("Sphere1-data", sphereEffects[1]) << "</node>\n"
-      << "<node id=\"Camera\" name=\"Camera\" type=\"NODE\"><matrix sid=\"transform\">-1 0 0 0 0 0 1 3 0 1 0 0 0 0 0 1"
+      << "<node id=\"Camera\" name=\"Camera\" type=\"NODE\"><matrix sid=\"transform\">" << cameraMatrix
       << "</matrix><instance_camera url=\"#Camera-camera\"/></node>\n";
   for (const Wall& wall : walls) {
     dae << "<node id=\"" << wall.name << "\" name=\"" << wall.name << "\" type=\"NODE\"><matrix sid=\"transform\">"
