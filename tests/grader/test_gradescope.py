@@ -1,0 +1,207 @@
+#!/usr/bin/env python3
+"""The Gradescope autograder as Gradescope runs it: tools/gradescope/make-zip.sh
+builds the zip; it is unpacked into a scratch folder standing in for
+/autograder (AUTOGRADER_ROOT), so the zip's root is AUTOGRADER_ROOT/source;
+setup.sh runs there once (as root, without apt-get: PATHLAB_SKIP_APT=1, the
+packages must be installed), run_autograder is copied to AUTOGRADER_ROOT/,
+and then, for each submission, the student's files are put flat in
+AUTOGRADER_ROOT/submission and run_autograder must write
+AUTOGRADER_ROOT/results/results.json in Gradescope's schema:
+  - the reference solutions (solutions/*/*.cpp, flat): full marks;
+  - the untouched stubs (tasks/*/*.cpp, flat): 0, with every test present.
+Nothing may be written to the real /autograder. The scratch folder is
+removed when everything passed (kept with --keep, or on failure).
+
+usage: test_gradescope.py REPO_ROOT WORK_DIR [--keep]"""
+import json
+import os
+import shutil
+import stat
+import subprocess
+import sys
+import tempfile
+import time
+import zipfile
+from pathlib import Path
+
+root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
+keep = "--keep" in sys.argv[3:]
+work = work_dir / "gradescope"
+autograder = work / "autograder"  # stands in for /autograder
+REAL = Path("/autograder")
+SETUP_TIMEOUT, GRADE_TIMEOUT = 1200, 900
+VISIBILITIES = {"hidden", "after_due_date", "after_published", "visible"}
+
+
+def snapshot(path: Path):
+    """What exists under `path` (paths, sizes, mtimes): the real /autograder must not change."""
+    if not path.exists():
+        return None
+    found = {}
+    for dirpath, dirnames, filenames in os.walk(path):
+        for name in dirnames + filenames:
+            p = os.path.join(dirpath, name)
+            try:
+                s = os.lstat(p)
+                found[p] = (s.st_size, s.st_mtime_ns)
+            except OSError:
+                pass
+    return found
+
+
+def unpack(archive: Path, into: Path) -> None:
+    """Like unzip: the files and their permission bits (zipfile.extractall drops them)."""
+    with zipfile.ZipFile(archive) as z:
+        for info in z.infolist():
+            target = Path(z.extract(info, into))
+            mode = (info.external_attr >> 16) & 0o7777
+            if mode and not info.is_dir():
+                os.chmod(target, mode)
+
+
+def environment() -> dict:
+    env = dict(os.environ, AUTOGRADER_ROOT=str(autograder), PATHLAB_SKIP_APT="1")
+    if shutil.which("ccache") and "CMAKE_CXX_COMPILER_LAUNCHER" not in env:
+        env["CMAKE_CXX_COMPILER_LAUNCHER"] = "ccache"  # picked up by setup.sh's first configure
+    return env
+
+
+def schema_problems(report) -> list:
+    problems = []
+    if not isinstance(report, dict):
+        return ["results.json is not a JSON object"]
+    if not isinstance(report.get("score"), (int, float)):
+        problems.append("no numeric top-level score")
+    tests = report.get("tests")
+    if not isinstance(tests, list) or not tests:
+        return problems + ["no tests[]"]
+    for test in tests:
+        for field, kind in (("name", str), ("score", (int, float)), ("max_score", (int, float)), ("output", str)):
+            if not isinstance(test.get(field), kind):
+                problems.append(f"test {test.get('name', '?')}: {field} missing or not {kind}")
+        if "visibility" in test and test["visibility"] not in VISIBILITIES:
+            problems.append(f"test {test.get('name')}: visibility {test['visibility']!r}")
+        if "status" in test and test["status"] not in ("passed", "failed"):
+            problems.append(f"test {test.get('name')}: status {test['status']!r}")
+    names = [t.get("name") for t in tests]
+    if len(set(names)) != len(names):
+        problems.append("test names are not unique")
+    if not problems and abs(sum(t["score"] for t in tests) - report["score"]) > 1e-6:
+        problems.append(f"score {report['score']} is not the sum of the tests' scores")
+    return problems
+
+
+def grade(kind: str, sources, env, failures):
+    """Runs run_autograder on `sources` put flat in the submission folder; returns results.json or None."""
+    submission, results = autograder / "submission", autograder / "results"
+    for folder in (submission, results):
+        shutil.rmtree(folder, ignore_errors=True)
+        folder.mkdir()
+    for source in sources:  # tasks/*/debugger.cpp: seven of one name, the first kept (the grader ignores it)
+        if not (submission / source.name).exists():
+            shutil.copy(source, submission / source.name)
+    start = time.time()
+    with open(results / "stdout", "w") as log:  # as Gradescope's harness keeps it
+        run = subprocess.run([str(autograder / "run_autograder")], cwd=autograder, env=env, stdout=log,
+                             stderr=subprocess.STDOUT, timeout=GRADE_TIMEOUT)
+    seconds = time.time() - start
+    stdout = (results / "stdout").read_text(errors="replace")
+    out = results / "results.json"
+    print(f"{kind}: run_autograder exit {run.returncode}, {seconds:.0f} s")
+    if run.returncode != 0:
+        failures.append(f"{kind}: run_autograder exited {run.returncode}:\n{stdout[-2000:]}")
+    if not out.exists():
+        failures.append(f"{kind}: no results.json in {results}:\n{stdout[-2000:]}")
+        return None
+    if f"grading {submission}/" not in stdout:
+        failures.append(f"{kind}: the grader did not grade the files in {submission}:\n{stdout[-1000:]}")
+    report = json.loads(out.read_text())
+    problems = schema_problems(report)
+    failures += [f"{kind}: {p}" for p in problems]
+    if problems:
+        return None
+    points = sum(t["max_score"] for t in report["tests"])
+    print(f"{kind}: score {report['score']:g} of {points:g}, {len(report['tests'])} tests; "
+          f"output: {report.get('output', '').splitlines()[:1]}")
+    return report
+
+
+def main() -> int:
+    failures = []
+    real_before = snapshot(REAL)
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    env = environment()
+    start = time.time()
+
+    # The zip, unpacked where Gradescope unpacks it.
+    with tempfile.TemporaryDirectory(prefix="pathlab-zip-") as temp:
+        archive = Path(temp) / "autograder.zip"
+        subprocess.run(["bash", str(root / "tools/gradescope/make-zip.sh"), str(archive)], check=True,
+                       stdout=subprocess.DEVNULL, timeout=300)
+        names = set(zipfile.ZipFile(archive).namelist())
+        for required in ("setup.sh", "run_autograder", "source/CMakeLists.txt", "source/tools/grade"):
+            if required not in names:
+                failures.append(f"the zip has no {required}")
+        print(f"zip: {archive.stat().st_size >> 20} MB, {len(names)} entries")
+        unpack(archive, autograder / "source")
+    for script in ("setup.sh", "run_autograder"):
+        if not os.access(autograder / "source" / script, os.X_OK):
+            failures.append(f"{script} is not executable in the zip")
+
+    # setup.sh, once, from the unpacked zip (Gradescope runs it as root when it builds the image).
+    t = time.time()
+    log = work / "setup.log"
+    with open(log, "w") as out:
+        setup = subprocess.run(["bash", "./setup.sh"], cwd=autograder / "source", env=env, stdout=out,
+                               stderr=subprocess.STDOUT, timeout=SETUP_TIMEOUT)
+    print(f"setup.sh: exit {setup.returncode}, {time.time() - t:.0f} s (log: {log})")
+    if setup.returncode != 0:
+        failures.append(f"setup.sh exited {setup.returncode}:\n{log.read_text(errors='replace')[-3000:]}")
+    else:
+        cache = autograder / "source/source/build-grade/CMakeCache.txt"
+        if f"CMAKE_HOME_DIRECTORY:INTERNAL={autograder}/source/source" not in cache.read_text():
+            failures.append(f"setup.sh's build is not the unpacked tree's ({cache})")
+        shutil.copy(autograder / "source/run_autograder", autograder / "run_autograder")  # as Gradescope does
+
+        reference = grade("reference", sorted(root.glob("solutions/*/*.cpp")), env, failures)
+        if reference:
+            points = sum(t["max_score"] for t in reference["tests"])
+            if points <= 0 or reference["score"] != points:
+                lost = [t["name"] for t in reference["tests"] if t["score"] != t["max_score"]]
+                failures.append(f"reference: scored {reference['score']:g} of {points:g} (lost: {lost[:3]})")
+            tasks = {t["name"].split(":")[0] for t in reference["tests"]}
+            if tasks != {f"Task {n}" for n in range(1, 8)}:
+                failures.append(f"reference: the tests cover {sorted(tasks)}, not tasks 1-7")
+        stubs = grade("stubs", sorted(root.glob("tasks/*/*.cpp")), env, failures)
+        if stubs:
+            if stubs["score"] != 0 or any(t["score"] != 0 for t in stubs["tests"]):
+                failures.append(f"stubs: scored {stubs['score']:g}, expected 0")
+            if reference:
+                shape = lambda r: [(t["name"], t["max_score"]) for t in r["tests"]]
+                missing = sorted(set(shape(reference)) - set(shape(stubs)))
+                extra = sorted(set(shape(stubs)) - set(shape(reference)))
+                if missing or extra:
+                    failures.append(f"stubs: not every test present (missing {missing[:3]}, extra {extra[:3]})")
+            compiled = [t["name"] for t in stubs["tests"] if "did not compile" in t["output"]
+                        or "did not link" in t["output"]]
+            if compiled:
+                failures.append(f"stubs: {len(compiled)} tests report a build failure, e.g. {compiled[0]}")
+
+    # Nothing outside the scratch folder: the real /autograder is untouched.
+    if snapshot(REAL) != real_before:
+        failures.append(f"{REAL} was {'created' if real_before is None else 'changed'}: a path is hard-coded")
+    print(f"total: {time.time() - start:.0f} s")
+    for f in failures:
+        print("FAIL:", f)
+    if failures:
+        print(f"scratch kept: {work}")
+        return 1
+    if not keep:
+        shutil.rmtree(work, ignore_errors=True)
+    print("gradescope-zip: ok")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
