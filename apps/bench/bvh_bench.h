@@ -1,4 +1,5 @@
-// `pathlab-bench bvh`: the reference BVH against Intel Embree on the same rays.
+// `pathlab-bench bvh`: task 3's BVH as linked (the student's or the reference,
+// and the output says which) against Intel Embree on the same rays.
 #pragma once
 
 #include <string>

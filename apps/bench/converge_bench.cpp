@@ -1,45 +1,68 @@
 #include "converge_bench.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
-#include <cstdlib>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <sstream>
 #include <vector>
 
+#include "linked_tasks.h"
 #include "pathlab/error.h"
 #include "pathlab/parallel.h"
 #include "pathlab/render.h"
 #include "pathlab/scene_io.h"
+#include "pathlab/todo.h"
 
 namespace pathlab::bench {
 namespace {
 
 namespace fs = std::filesystem;
+using Json = nlohmann::json;
 
 struct Strategy {
   std::string name;
   RenderOptions options;
+  // The tasks whose code must act on the change for it to do anything (the
+  // framework only passes it on); empty for the default strategy.
+  std::vector<int> tasks;
+  std::string change;  // the change, as that code sees it
 };
 
-// Each strategy changes one thing from the reference's default.
+// Each strategy changes one thing from the default (the reference's best).
 Strategy strategy(const std::string& name) {
-  Strategy s{name, {}};
+  Strategy s{name, {}, {}, {}};
   if (name == "reference" || name == "env-importance" || name == "cosine" || name == "nee" || name == "rr") {
   } else if (name == "env-uniform") {
     s.options.environmentSampling = EnvironmentSampling::Uniform;
+    s.tasks = {7};
+    s.change = "uniform environment sampling (sampleUniformSphere instead of sampleEnvironment)";
   } else if (name == "uniform-hemisphere") {
     s.options.cosineSampling = false;
+    s.tasks = {5};
+    s.change = "context.cosineSampling = false";
   } else if (name == "no-nee") {
     s.options.lightSampling = false;
+    s.tasks = {5};
+    s.change = "context.lightSampling = false";
   } else if (name == "no-rr") {
     s.options.russianRoulette = false;
+    s.tasks = {5};
+    s.change = "context.russianRoulette = false";
   } else if (name == "mis-balance") {
     s.options.mis = MisHeuristic::Balance;
+    s.tasks = {4, 5};
+    s.change = "context.mis = MisHeuristic::Balance";
   } else if (name == "mis-power") {
     s.options.mis = MisHeuristic::Power;
+    s.tasks = {4, 5};
+    s.change = "context.mis = MisHeuristic::Power";
   } else {
     throw Error("--strategies: unknown strategy \"" + name +
                 "\" (reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, mis-balance, mis-power, env-importance, "
@@ -48,49 +71,230 @@ Strategy strategy(const std::string& name) {
   return s;
 }
 
+// The probe: a small render of the scene with the strategy's change and
+// without, same seed. Rendering is deterministic (the same image for any
+// thread count), so identical images mean the linked code ignored the change
+// here: running the strategy would time the default under another name.
+constexpr int kProbeWidth = 64;
+constexpr int kProbeSpp = 8;
+
+Scene probeScene(const Scene& scene) {
+  Scene probe = scene;
+  const int width = std::min(scene.render.width, kProbeWidth);
+  probe.render.height = std::max(1, int(std::lround(double(scene.render.height) * width / scene.render.width)));
+  probe.render.width = width;
+  probe.render.samplesPerPixel = kProbeSpp;
+  probe.render.seed = 1;
+  return probe;
+}
+
+Image probeImage(const Scene& probe, RenderOptions options, int threads) {
+  options.threads = threads;
+  options.progress = false;
+  return pathlab::render(probe, options).image;
+}
+
+bool identical(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height) return false;
+  for (size_t i = 0; i < a.pixels.size(); ++i) {
+    if (a.pixels[i] != b.pixels[i]) return false;
+  }
+  return true;
+}
+
+// "T5.2, T5.1": the TODOs of task n reached so far (its code is a stub there).
+std::string todosOfTask(int task) {
+  std::string out;
+  const std::string prefix = "T" + std::to_string(task) + ".";
+  for (const TodoReached& todo : todosReached()) {
+    if (todo.tag.rfind(prefix, 0) != 0 || out.find(todo.tag) != std::string::npos) continue;
+    if (!out.empty()) out += ", ";
+    out += todo.tag;
+  }
+  return out;
+}
+
+std::string joinTasks(const std::vector<int>& tasks) {
+  std::string out;
+  for (int n : tasks) out += (out.empty() ? "" : " and ") + std::to_string(n);
+  return out;
+}
+
+struct Availability {
+  bool available = true;
+  std::string reason;  // why not, when not
+  std::string note;    // a caveat, when available
+};
+
+Availability judge(const Strategy& s, const Scene& scene, const LinkedTasks& linked, bool identicalToDefault) {
+  Availability a;
+  std::vector<int> yours, reference, unknown;
+  for (int n : s.tasks) {
+    (linked[n] == Code::Yours ? yours : linked[n] == Code::Reference ? reference : unknown).push_back(n);
+  }
+  if (!identicalToDefault) {
+    if (!yours.empty() && !reference.empty()) {
+      a.note = "combines your task " + joinTasks(yours) + " with the reference's task " + joinTasks(reference) +
+               ": unbiased only if both apply " + s.change;
+    }
+    return a;
+  }
+  a.available = false;
+  const std::string probe = "a probe render with it is identical to the default";
+  // Causes in the scene first: there the reference would not do more.
+  std::string sceneCause;
+  if (s.name == "env-uniform" && (!scene.environment || scene.environment->image.pixels.empty())) {
+    sceneCause = "it has no environment map";
+  } else if (s.name == "no-rr" && scene.render.maxDepth < 3) {
+    sceneCause = "max_depth " + std::to_string(scene.render.maxDepth) + " ends paths before Russian roulette starts";
+  }
+  if (!sceneCause.empty()) {
+    a.reason = "no effect on this scene (" + sceneCause + "; " + probe + ")";
+  } else if (!yours.empty()) {
+    a.reason = "your task " + joinTasks(yours) + " ignores " + s.change + " (" + probe;
+    for (int n : yours) {
+      const std::string todos = todosOfTask(n);
+      if (!todos.empty()) a.reason += "; your task " + std::to_string(n) + " reached TODO " + todos;
+    }
+    a.reason += ")";
+  } else if (!unknown.empty()) {
+    a.reason = "the linked task " + joinTasks(unknown) + " (whose code this binary does not record) ignores " +
+               s.change + " (" + probe + ")";
+  } else {
+    a.reason = "no effect on this scene (" + probe + ")";
+  }
+  return a;
+}
+
 struct Point {
   int spp;
   double seconds, rmse, relMse;
+  std::optional<double> efficiency;  // 1 / (relMSE x seconds); none at zero error or time
 };
+
+std::optional<double> efficiencyOf(double relMse, double seconds) {
+  if (!(relMse > 0.0) || !(seconds > 0.0) || !std::isfinite(relMse)) return std::nullopt;
+  return 1.0 / (relMse * seconds);
+}
+
+std::string csvQuote(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+// The reference image's file name: the linked code's default strategy made
+// it, so an image made by other code is never reused. All-reference builds
+// keep the plain name.
+std::string referenceFileName(const std::string& stem, int spp, const LinkedTasks& linked) {
+  std::string name = stem + "-reference-" + std::to_string(spp) + "spp";
+  std::string yours, unknown;
+  for (int n = 1; n <= 7; ++n) {
+    if (linked[n] == Code::Yours) yours += std::to_string(n);
+    if (linked[n] == Code::Unknown) unknown += std::to_string(n);
+  }
+  if (!yours.empty()) name += "-yours" + yours;
+  if (!unknown.empty()) name += "-unknown" + unknown;
+  return name + ".exr";
+}
 
 }  // namespace
 
 int runConvergeBench(const ConvergeOptions& options) {
+  // Line by line, so that stdout and the notes and progress on stderr
+  // interleave in order when both go to one log.
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   Scene scene = loadScene(options.scene);
   const int threads = options.threads > 0 ? options.threads : defaultThreadCount();
   fs::create_directories(options.outDir);
   const std::string stem = fs::path(options.scene).stem().string();
+  const LinkedTasks linked = linkedTasks();
+  const std::string code = describeAllTasks(linked);
+  std::printf("code: %s\n", code.c_str());
 
-  // The converged reference: the default (best) strategy, another seed, cached.
-  const fs::path referencePath = fs::path(options.outDir) / (stem + "-reference-" + std::to_string(options.referenceSpp) + "spp.exr");
+  std::vector<Strategy> strategies;
+  std::stringstream list(options.strategies);
+  for (std::string name; std::getline(list, name, ',');) strategies.push_back(strategy(name));
+
+  // Which strategies the linked code implements: probe each change first
+  // (cheap), so that nothing unavailable is timed or compared.
+  const Scene probe = probeScene(scene);
+  std::optional<Image> probeDefault;
+  std::vector<Availability> availability(strategies.size());
+  for (size_t i = 0; i < strategies.size(); ++i) {
+    const Strategy& s = strategies[i];
+    if (s.tasks.empty()) continue;  // the default strategy
+    if (!probeDefault) probeDefault = probeImage(probe, RenderOptions{}, threads);
+    const bool same = identical(probeImage(probe, s.options, threads), *probeDefault);
+    availability[i] = judge(s, scene, linked, same);
+    if (availability[i].available) {
+      std::printf("probe %-18s available: changes the image (%s)\n", s.name.c_str(),
+                  describeTasks(linked, s.tasks).c_str());
+      if (!availability[i].note.empty()) std::printf("  note: %s\n", availability[i].note.c_str());
+    } else {
+      std::printf("probe %-18s unavailable: %s\n", s.name.c_str(), availability[i].reason.c_str());
+    }
+  }
+  if (probeDefault) {
+    std::printf("(probe: %dx%d, %d spp, each strategy against the default, same seed, compared pixel for pixel)\n",
+                probe.render.width, probe.render.height, kProbeSpp);
+  }
+
+  // The converged reference image: the linked code's default (best)
+  // strategy, another seed, cached.
+  const fs::path referencePath = fs::path(options.outDir) / referenceFileName(stem, options.referenceSpp, linked);
   Image reference;
+  bool cached = false;
+  double referenceSeconds = 0.0;
   if (fs::exists(referencePath)) {
     reference = readImage(referencePath.string());
-    std::printf("reference: %s (cached)\n", referencePath.string().c_str());
+    cached = true;
+    std::printf("reference image: %s (cached)\n", referencePath.string().c_str());
   } else {
     Scene high = scene;
     high.render.samplesPerPixel = options.referenceSpp;
     high.render.seed = 987654321;
+    std::fprintf(stderr,
+                 "rendering the reference image once: %dx%d, %d spp, default strategy (%s); it is cached in %s for "
+                 "later runs with the same --out\n",
+                 high.render.width, high.render.height, options.referenceSpp,
+                 describeTasks(linked, {1, 2, 3, 4, 5, 6, 7}).c_str(),
+                 referencePath.string().c_str());
     RenderOptions render;
     render.threads = threads;
-    render.progress = false;
+    render.progress = true;  // the bar shows itself only when stderr is a terminal
     RenderResult result = pathlab::render(high, render);
     writeImage(result.image, referencePath.string());
     reference = result.image;
-    std::printf("reference: %s, %d spp in %.1f s\n", referencePath.string().c_str(), options.referenceSpp,
+    referenceSeconds = result.stats.seconds;
+    std::printf("reference image: %s, %d spp in %.1f s\n", referencePath.string().c_str(), options.referenceSpp,
                 result.stats.seconds);
   }
 
   const fs::path csvPath = fs::path(options.outDir) / (stem + "-converge.csv");
   std::ofstream csv(csvPath);
-  csv << "strategy,spp,seconds,rmse,relmse,efficiency\n";
-  std::vector<std::pair<std::string, std::vector<Point>>> curves;
-  std::stringstream list(options.strategies);
-  for (std::string name; std::getline(list, name, ',');) {
-    Strategy s = strategy(name);
+  csv << "strategy,spp,seconds,rmse,relmse,efficiency,available,reason\n";
+  auto number = [](std::optional<double> v) {
+    std::ostringstream out;
+    if (v) out << *v;
+    else out << "nan";
+    return out.str();
+  };
+  auto brief = [](std::optional<double> v, const char* none) {
+    char text[32];
+    if (v) std::snprintf(text, sizeof text, "%.4g", *v);
+    else std::snprintf(text, sizeof text, "%s", none);
+    return std::string(text);
+  };
+  std::vector<std::vector<Point>> curves(strategies.size());
+  for (size_t i = 0; i < strategies.size(); ++i) {
+    Strategy s = strategies[i];
+    if (!availability[i].available) {
+      csv << s.name << ",0,nan,nan,nan,nan,false," << csvQuote(availability[i].reason) << '\n';
+      continue;
+    }
     s.options.threads = threads;
     s.options.progress = false;
-    std::vector<Point> points;
     double spent = 0.0;
     for (int spp = 1; spp <= (1 << 16) && spent < options.budgetSeconds; spp *= 2) {
       Scene run = scene;
@@ -98,44 +302,128 @@ int runConvergeBench(const ConvergeOptions& options) {
       run.render.seed = 1;
       RenderResult result = pathlab::render(run, s.options);
       const ImageError error = compareImages(result.image, reference);
-      points.push_back({spp, result.stats.seconds, error.rmse, error.relMse});
+      const Point point{spp, result.stats.seconds, error.rmse, error.relMse,
+                        efficiencyOf(error.relMse, result.stats.seconds)};
+      curves[i].push_back(point);
       spent += result.stats.seconds;
-      csv << name << ',' << spp << ',' << result.stats.seconds << ',' << error.rmse << ',' << error.relMse << ','
-          << 1.0 / (error.relMse * result.stats.seconds) << '\n';
-      std::printf("%-16s %6d spp %8.3f s  RMSE %.5f  relMSE %.6f  efficiency %.4g\n", name.c_str(), spp,
-                  result.stats.seconds, error.rmse, error.relMse, 1.0 / (error.relMse * result.stats.seconds));
+      csv << s.name << ',' << spp << ',' << point.seconds << ',' << point.rmse << ',' << point.relMse << ','
+          << number(point.efficiency) << ",true," << csvQuote(availability[i].note) << '\n';
+      std::printf("%-18s %6d spp %8.3f s  RMSE %.5f  relMSE %.6f  efficiency %s\n", s.name.c_str(), spp,
+                  point.seconds, point.rmse, point.relMse,
+                  brief(point.efficiency, "- (zero error)").c_str());
     }
-    curves.push_back({name, points});
   }
   csv.close();
   std::printf("wrote %s\n", csvPath.string().c_str());
-  // The plot: matplotlib (Debian's python3-matplotlib), no hand-made charts.
+  // The plot: matplotlib (Debian's python3-matplotlib), no hand-made charts;
+  // it gets the measured rows only (an unavailable strategy has no curve).
   const fs::path pngPath = fs::path(options.outDir) / (stem + "-converge.png");
+  const fs::path plotCsvPath = fs::path(options.outDir) / (stem + "-converge.plot.csv");
+  size_t measured = 0;
+  {
+    std::ofstream plotCsv(plotCsvPath);
+    plotCsv << "strategy,spp,seconds,rmse,relmse,efficiency\n";
+    for (size_t i = 0; i < strategies.size(); ++i) {
+      for (const Point& p : curves[i]) {
+        if (!p.efficiency) continue;  // zero error: nothing to draw on log axes
+        plotCsv << strategies[i].name << ',' << p.spp << ',' << p.seconds << ',' << p.rmse << ',' << p.relMse << ','
+                << *p.efficiency << '\n';
+        ++measured;
+      }
+    }
+  }
   const std::string python = fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-  const std::string command = python + " " PATHLAB_SOURCE_DIR "/tools/plot-convergence.py '" + csvPath.string() +
+  const std::string command = python + " " PATHLAB_SOURCE_DIR "/tools/plot-convergence.py '" + plotCsvPath.string() +
                               "' '" + pngPath.string() + "' '" + stem + ": error against time' > /dev/null";
-  if (std::system(command.c_str()) != 0) {
+  if (measured == 0) {
+    std::fprintf(stderr, "no plot: no strategy ran with an error above zero\n");
+  } else if (std::system(command.c_str()) != 0) {
     std::fprintf(stderr, "no plot: install python3-matplotlib, then run tools/plot-convergence.py %s %s\n",
                  csvPath.string().c_str(), pngPath.string().c_str());
   } else {
     std::printf("wrote %s\n", pngPath.string().c_str());
   }
+  fs::remove(plotCsvPath);
 
   // Efficiency = 1 / (relMSE x time): for unbiased estimators it settles to a
   // constant, and the ratio of two is the ratio of times to the same error.
-  std::vector<double> efficiency;
-  for (const auto& [name, points] : curves) {
+  std::vector<std::optional<double>> efficiency(strategies.size());
+  std::printf("%-18s %12s  %s\n", "strategy", "efficiency", "(median of the last 3 points; whose code ran)");
+  for (size_t i = 0; i < strategies.size(); ++i) {
+    const Strategy& s = strategies[i];
+    if (!availability[i].available) {
+      std::printf("%-18s %12s  %s\n", s.name.c_str(), "unavailable", availability[i].reason.c_str());
+      continue;
+    }
     std::vector<double> last;
-    for (size_t i = points.size() >= 3 ? points.size() - 3 : 0; i < points.size(); ++i) {
-      last.push_back(1.0 / (points[i].relMse * points[i].seconds));
+    for (size_t p = curves[i].size() >= 3 ? curves[i].size() - 3 : 0; p < curves[i].size(); ++p) {
+      if (curves[i][p].efficiency) last.push_back(*curves[i][p].efficiency);
     }
     std::sort(last.begin(), last.end());
-    efficiency.push_back(last.empty() ? 0.0 : last[last.size() / 2]);
-    std::printf("%-16s efficiency (median of the last 3 points) %.4g\n", name.c_str(), efficiency.back());
+    if (!last.empty()) efficiency[i] = last[last.size() / 2];
+    const std::string who = s.tasks.empty() ? "default strategy: " + describeTasks(linked, {4, 5, 7})
+                                            : describeTasks(linked, s.tasks);
+    std::printf("%-18s %12s  %s\n", s.name.c_str(), brief(efficiency[i], "-").c_str(), who.c_str());
   }
-  if (curves.size() >= 2 && efficiency[1] > 0.0) {
-    std::printf("%s needs %.1fx less time than %s for the same relMSE\n", curves[0].first.c_str(),
-                efficiency[0] / efficiency[1], curves[1].first.c_str());
+  std::string comparison;
+  if (strategies.size() >= 2) {
+    const std::string &first = strategies[0].name, &second = strategies[1].name;
+    if (!availability[0].available || !availability[1].available) {
+      comparison = "no comparison of " + first + " with " + second + ": " +
+                   (availability[0].available ? second : first) + " is unavailable";
+    } else if (!efficiency[0] || !efficiency[1]) {
+      comparison = "no comparison of " + first + " with " + second + ": zero error (is the image black?)";
+    } else {
+      char line[256];
+      std::snprintf(line, sizeof line, "%s needs %.1fx less time than %s for the same relMSE", first.c_str(),
+                    *efficiency[0] / *efficiency[1], second.c_str());
+      comparison = line;
+    }
+    std::printf("%s\n", comparison.c_str());
+  }
+  std::string reached;
+  for (const TodoReached& todo : todosReached()) reached += (reached.empty() ? "" : ", ") + todo.tag;
+  if (!reached.empty()) {
+    std::printf("note: the linked code reached TODO %s: unfinished task code renders neutral values there "
+                "(black), so its errors and efficiencies say nothing yet\n", reached.c_str());
+  }
+
+  if (options.json) {
+    Json json;
+    json["scene"] = options.scene;
+    json["tasks"] = allTasksJson(linked);
+    json["tasks_recorded"] = linked.recorded;
+    json["reference_image"] = {{"path", referencePath.string()},
+                               {"spp", options.referenceSpp},
+                               {"cached", cached},
+                               {"seconds", cached ? Json(nullptr) : Json(referenceSeconds)}};
+    json["probe"] = {{"width", probe.render.width}, {"height", probe.render.height}, {"spp", kProbeSpp}};
+    Json todos = Json::array();
+    for (const TodoReached& todo : todosReached()) todos.push_back(todo.tag);
+    json["todos_reached"] = todos;
+    Json entries = Json::array();
+    for (size_t i = 0; i < strategies.size(); ++i) {
+      const Strategy& s = strategies[i];
+      Json tasks = Json::object();
+      for (int n : s.tasks) tasks[std::to_string(n)] = codeName(linked[n]);
+      Json points = Json::array();
+      for (const Point& p : curves[i]) {
+        points.push_back({{"spp", p.spp}, {"seconds", p.seconds}, {"rmse", p.rmse}, {"relmse", p.relMse},
+                          {"efficiency", p.efficiency ? Json(*p.efficiency) : Json(nullptr)}});
+      }
+      Json entry = {{"name", s.name},
+                    {"default", s.tasks.empty()},
+                    {"relies_on", tasks},
+                    {"available", availability[i].available},
+                    {"points", points},
+                    {"efficiency", efficiency[i] ? Json(*efficiency[i]) : Json(nullptr)}};
+      if (!availability[i].available) entry["reason"] = availability[i].reason;
+      if (!availability[i].note.empty()) entry["note"] = availability[i].note;
+      entries.push_back(entry);
+    }
+    json["strategies"] = entries;
+    json["comparison"] = comparison.empty() ? Json(nullptr) : Json(comparison);
+    std::printf("%s\n", json.dump().c_str());
   }
   return 0;
 }

@@ -12,6 +12,7 @@ struct ConvergeOptions {
   std::string outDir = "converge";
   int referenceSpp = 2048;
   int threads = 0;
+  bool json = false;  // one JSON object as the last line
 };
 
 int runConvergeBench(const ConvergeOptions& options);

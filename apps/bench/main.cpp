@@ -1,7 +1,7 @@
 // pathlab-bench: benchmarks that print numbers (never timed unit tests).
 //   pathlab-bench bvh [MESH.obj | --triangles N] [--threads N] [--json]
 //   pathlab-bench render [--quick] [--threads N] [--json]
-//   pathlab-bench converge SCENE [--strategies a,b] [--budget SECONDS] [--out DIR]
+//   pathlab-bench converge SCENE [--strategies a,b] [--budget SECONDS] [--out DIR] [--json]
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
   CLI::App app{"PathLab benchmarks"};
   app.require_subcommand(1);
   pathlab::bench::BvhBenchOptions bvh;
-  CLI::App* bvhCommand = app.add_subcommand("bvh", "The reference BVH against Intel Embree on the same rays");
+  CLI::App* bvhCommand = app.add_subcommand("bvh", "Task 3's BVH as built (yours or the reference: the output says) against Intel Embree on the same rays");
   bvhCommand->add_option("mesh", bvh.mesh, "OBJ mesh (default: $PATHLAB_DATA_DIR/models/stanford-bunny.obj, else a generated scan-like mesh)");
   bvhCommand->add_option("--threads", bvh.threads, "Threads for the multithreaded runs (default: all cores)");
   bvhCommand->add_flag("--json", bvh.json, "Print one JSON object as the last line");
@@ -26,13 +26,15 @@ int main(int argc, char** argv) {
   renderCommand->add_option("--threads", render.threads, "Threads (default: all cores)");
   renderCommand->add_flag("--json", render.json, "Print one JSON object as the last line");
   pathlab::bench::ConvergeOptions converge;
-  CLI::App* convergeCommand = app.add_subcommand("converge", "Error against time for sampling strategies");
+  CLI::App* convergeCommand = app.add_subcommand(
+      "converge", "Error against time for sampling strategies (those the linked task code ignores: unavailable)");
   convergeCommand->add_option("scene", converge.scene, "Scene file")->required();
   convergeCommand->add_option("--strategies", converge.strategies, "Comma-separated: reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, mis-balance, mis-power, env-importance, env-uniform");
   convergeCommand->add_option("--budget", converge.budgetSeconds, "Render seconds per strategy (default 60)");
   convergeCommand->add_option("--out", converge.outDir, "Output folder for the CSV and the cached reference");
   convergeCommand->add_option("--reference-spp", converge.referenceSpp, "Samples per pixel of the reference");
   convergeCommand->add_option("--threads", converge.threads, "Threads (default: all cores)");
+  convergeCommand->add_flag("--json", converge.json, "Print one JSON object as the last line");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

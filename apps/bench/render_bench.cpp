@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "linked_tasks.h"
 #include "pathlab/parallel.h"
 #include "pathlab/render.h"
 #include "pathlab/scene_io.h"
@@ -27,6 +28,10 @@ int runRenderBench(const RenderBenchOptions& options) {
   std::printf("grading render%s: %dx%d, %d spp, -m %d, %d threads\n", options.quick ? " (quick)" : "",
               scene.render.width, scene.render.height, scene.render.samplesPerPixel, scene.render.maxDepth,
               render.threads);
+  // A path runs every task: camera rays, intersection, BVH, direct lighting,
+  // path tracing (and task 6's BSDFs, task 7's sky where the scene has them).
+  const LinkedTasks linked = linkedTasks();
+  std::printf("code: %s\n", describeAllTasks(linked).c_str());
   std::printf("%.1f s, %.3f M paths/s, %.3f M rays/s, %.2f rays per path\n", stats.seconds, paths / 1e6, rays / 1e6,
               double(stats.rays) / double(stats.samples));
   if (stats.nonFiniteSamples) std::printf("warning: %llu NaN/Inf samples\n", (unsigned long long)stats.nonFiniteSamples);
@@ -34,7 +39,8 @@ int runRenderBench(const RenderBenchOptions& options) {
     nlohmann::json json = {{"paths_per_second", paths}, {"rays_per_second", rays},   {"seconds", stats.seconds},
                            {"spp", scene.render.samplesPerPixel},                    {"width", scene.render.width},
                            {"height", scene.render.height},                          {"max_depth", scene.render.maxDepth},
-                           {"threads", render.threads},                              {"quick", options.quick}};
+                           {"threads", render.threads},                              {"quick", options.quick},
+                           {"tasks", allTasksJson(linked)}};
     std::printf("%s\n", json.dump().c_str());
   }
   return 0;

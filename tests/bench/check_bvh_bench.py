@@ -1,33 +1,151 @@
-"""Smoke test of `pathlab-bench bvh --json`: it runs, its last line is the
-promised JSON object, and the reference agrees with Embree on every ray.
-No timing is asserted: speed is reported, never tested."""
+"""Smoke test of pathlab-bench (CTest bench-bvh-agrees). No timing is
+asserted: speed is reported, never tested.
+
+bvh --json: it runs, its last line is the promised JSON object, task 3's BVH
+agrees with Embree on every ray, and the output names whose code ran ("yours"
+or "reference", as `pathlab --version` beside it says when it is there).
+
+converge --json on a small Cornell box: every strategy is either run or
+reported unavailable with a reason, never both; a strategy whose change a
+probe render shows to make no difference is unavailable (env-uniform on a
+scene without an environment map, in any build); with the reference's
+task 5 the task-5 strategies run; with the student's stub task 5 (it reached
+a T5 TODO: e.g. a build configured -DPATHLAB_TASK5=student) they are
+unavailable and the reason names your task 5. The stub case needs a second
+build configuration, so CTest's build (all reference by default) checks the
+probe through env-uniform, and the stub case runs when this script is given
+such a build's pathlab-bench.
+
+usage: check_bvh_bench.py PATHLAB-BENCH [--skip-bvh]"""
+import csv
 import json
+import os
+import re
 import subprocess
 import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SOURCE = os.path.normpath(os.path.join(HERE, "..", ".."))
+TASK5_STRATEGIES = ("uniform-hemisphere", "no-nee", "no-rr", "mis-power")
 
 bench = sys.argv[1]
-out = subprocess.run([bench, "bvh", "--json"], capture_output=True, text=True, timeout=120)
-print(out.stdout)
-print(out.stderr, file=sys.stderr)
-if out.returncode != 0:
-    sys.exit(f"pathlab-bench exited with {out.returncode}")
-result = json.loads(out.stdout.strip().splitlines()[-1])
 failures = []
-for key in ("build_ms_reference", "build_ms_embree", "triangles"):
-    if key not in result:
-        failures.append(f"missing key {key}")
-for name in ("primary", "shadow", "diffuse"):
-    entry = result.get(name, {})
-    for key in ("reference_mrays", "embree_mrays", "ratio", "mismatches"):
-        if key not in entry:
-            failures.append(f"{name}: missing key {key}")
-    if not entry.get("reference_mrays", 0) > 0:
-        failures.append(f"{name}: no reference rays traced")
-    if entry.get("mismatches") not in (0, None):
-        failures.append(f"{name}: {entry['mismatches']} rays where the reference and Embree disagree")
-if result.get("triangles", 0) < 50000:
-    failures.append("expected the bunny or the generated mesh (>= 50k triangles)")
+checks = 0
+
+
+def check(condition, message):
+    global checks
+    checks += 1
+    if not condition:
+        failures.append(message)
+    return condition
+
+
+def configured_tasks():
+    """{'1': 'reference', ...} from `pathlab --version` beside the bench, or None."""
+    cli = os.path.join(os.path.dirname(os.path.abspath(bench)), "pathlab")
+    if not os.path.exists(cli):
+        return None
+    out = subprocess.run([cli, "--version"], capture_output=True, text=True, timeout=30)
+    pairs = re.findall(r"(\d):(reference|student)", out.stdout)
+    return {n: ("yours" if v == "student" else "reference") for n, v in pairs} or None
+
+
+def run(args, timeout):
+    out = subprocess.run([bench] + args, capture_output=True, text=True, timeout=timeout)
+    print("$ pathlab-bench " + " ".join(args))
+    print(out.stdout)
+    print(out.stderr, file=sys.stderr)
+    return out
+
+
+expected = configured_tasks()
+
+# ---- bvh ---------------------------------------------------------------------
+if "--skip-bvh" not in sys.argv:
+    out = run(["bvh", "--json"], 300)
+    if check(out.returncode == 0, f"bvh: pathlab-bench exited with {out.returncode}"):
+        result = json.loads(out.stdout.strip().splitlines()[-1])
+        for key in ("build_ms_task3", "build_ms_embree", "triangles", "task3", "tasks"):
+            check(key in result, f"bvh: missing key {key}")
+        for name in ("primary", "shadow", "diffuse"):
+            entry = result.get(name, {})
+            for key in ("task3_mrays", "embree_mrays", "ratio", "mismatches"):
+                check(key in entry, f"bvh {name}: missing key {key}")
+            check(entry.get("task3_mrays", 0) > 0, f"bvh {name}: no rays traced through task 3")
+            check(entry.get("mismatches") in (0, None),
+                  f"bvh {name}: {entry.get('mismatches')} rays where task 3 and Embree disagree")
+        check(result.get("triangles", 0) >= 50000, "bvh: expected the bunny or the generated mesh (>= 50k triangles)")
+        # Whose code ran.
+        who = result.get("task3")
+        check(who in ("yours", "reference"),
+              f"bvh: task3 is {who!r}, not 'yours' or 'reference' (was pathlab-bench built without "
+              "PATHLAB_TASK_SUMMARY? apps/CMakeLists.txt gives it to pathlab and should to pathlab-bench)")
+        check(re.search(rf"^code: task 3 \(BVH\) {who}\b", out.stdout, re.M) is not None,
+              "bvh: the text output does not name whose task 3 ran")
+        if expected:
+            check(who == expected.get("3"), f"bvh: says task 3 is {who!r}, pathlab --version says {expected.get('3')!r}")
+            check(result.get("tasks", {}).get("2") == expected.get("2"), "bvh: task 2 labelled unlike pathlab --version")
+        if who in ("yours", "reference"):
+            label = "yours" if who == "yours" else "ref"
+            check(re.search(rf"^rays .*\|\s+{label}\s+Embree\s+ratio", out.stdout, re.M) is not None,
+                  f"bvh: the table's columns are not labelled {label!r}")
+
+# ---- converge ----------------------------------------------------------------
+strategies = ["reference", *TASK5_STRATEGIES, "env-uniform"]
+with tempfile.TemporaryDirectory(prefix="pathlab-bench-converge-") as tmp:
+    scene = json.load(open(os.path.join(SOURCE, "media", "scenes", "cornell-spheres.json")))
+    scene["render"].update(width=64, height=48)
+    scene_path = os.path.join(tmp, "small-cornell.json")
+    json.dump(scene, open(scene_path, "w"))
+    out = run(["converge", scene_path, "--strategies", ",".join(strategies), "--budget", "0.2",
+               "--reference-spp", "16", "--out", tmp, "--json"], 300)
+    if check(out.returncode == 0, f"converge: pathlab-bench exited with {out.returncode}"):
+        result = json.loads(out.stdout.strip().splitlines()[-1])
+        tasks = result.get("tasks", {})
+        check(sorted(tasks) == [str(n) for n in range(1, 8)], "converge: 'tasks' does not name tasks 1-7")
+        check(all(v in ("yours", "reference") for v in tasks.values()),
+              f"converge: tasks {tasks} (whose code ran is not recorded in this pathlab-bench)")
+        check(re.search(r"^code: task", out.stdout, re.M) is not None, "converge: no 'code:' line")
+        if expected:
+            check(tasks == expected, f"converge: says tasks are {tasks}, pathlab --version says {expected}")
+        by_name = {s["name"]: s for s in result.get("strategies", [])}
+        check(list(by_name) == strategies, f"converge: strategies {list(by_name)}, asked for {strategies}")
+        for name, s in by_name.items():
+            if s["available"]:
+                check(len(s["points"]) > 0, f"converge {name}: available but not run")
+                check(not s.get("reason"), f"converge {name}: available with a reason")
+            else:
+                check(not s["points"] and s["efficiency"] is None, f"converge {name}: unavailable but measured")
+                check(bool(s.get("reason")), f"converge {name}: unavailable without a reason")
+                check(re.search(rf"^{re.escape(name)}\s+unavailable\s+\S", out.stdout, re.M) is not None,
+                      f"converge {name}: the text table does not say unavailable")
+                check(re.search(rf"\d+(\.\d+)?x less time than {re.escape(name)}\b", out.stdout) is None and
+                      re.search(rf"^{re.escape(name)} needs", out.stdout, re.M) is None,
+                      f"converge {name}: a time ratio printed for an unavailable strategy")
+        check(by_name.get("reference", {}).get("available") is True, "converge: the default strategy must run")
+        env = by_name.get("env-uniform", {})
+        check(env.get("available") is False and "no environment map" in env.get("reason", ""),
+              "converge env-uniform: the probe should find it has no effect on a scene without an environment map")
+        stub5 = any(tag.startswith("T5.") for tag in result.get("todos_reached", []))
+        for name in TASK5_STRATEGIES:
+            s = by_name.get(name, {})
+            if tasks.get("5") == "reference":
+                check(s.get("available") is True, f"converge {name}: the reference's task 5 implements it")
+            elif stub5:
+                check(s.get("available") is False and "your task 5" in s.get("reason", ""),
+                      f"converge {name}: with the stub task 5 it must be unavailable, naming your task 5")
+        # The CSV says the same.
+        rows = list(csv.DictReader(open(os.path.join(tmp, "small-cornell-converge.csv"))))
+        for name, s in by_name.items():
+            mine = [r for r in rows if r["strategy"] == name]
+            flags = {r["available"] for r in mine}
+            check(flags == {"true" if s["available"] else "false"}, f"converge {name}: CSV available {flags}")
+            if not s["available"]:
+                check(len(mine) == 1 and mine[0]["reason"] == s["reason"], f"converge {name}: CSV reason")
+
 for f in failures:
     print("FAIL:", f)
-print(f"{4 - min(4, len(failures))} passed, {len(failures)} failed")
+print(f"{checks - len(failures)} checks passed, {len(failures)} failed")
 sys.exit(1 if failures else 0)
