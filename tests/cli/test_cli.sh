@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
 # End-to-end checks of the `pathlab` command line, as a user runs it.
 # usage: test_cli.sh PATHLAB PATHLAB_ALL_STUBS INPUTS_DIR
+# PATHLAB links the configured tasks, PATHLAB_ALL_STUBS every task from the
+# student files (tasks/). Nothing here depends on which tasks are done: in
+# the course repository the student files are the untouched stubs, in a
+# student release they are the student's work, any mix of done and undone.
 set -u
 pathlab=$(realpath "$1")
 stubs=$(realpath "$2")
 inputs=$(realpath "$3")
+root=$(realpath "$(dirname "$(realpath "${BASH_SOURCE[0]}")")/../..")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 passed=0
@@ -12,9 +17,48 @@ failed=0
 pass() { passed=$((passed + 1)); }
 fail() { echo "FAIL: $*"; failed=$((failed + 1)); }
 
+# Which student files the build compiled (cmake/PathLabTasks.cmake's lookup:
+# PATHLAB_STUDENT_DIR as the tasks/ tree or flat, else tasks/), and which of
+# them are undone: a PATHLAB_TODO call left outside comments.
+task_paths=(01-camera-rays/camera_rays.cpp 02-intersection/intersection.cpp 03-bvh/bvh.cpp
+            04-direct-lighting/direct_lighting.cpp 05-path-tracing/path_tracing.cpp
+            06-mirror-glass/mirror_glass.cpp 07-environment/environment.cpp)
+student_dir=$(sed -n 's/^PATHLAB_STUDENT_DIR:PATH=//p' "$(dirname "$pathlab")/CMakeCache.txt" 2>/dev/null)
+student_dir=${student_dir:-$root/tasks}
+task_file() {  # task_file N
+  local rel=${task_paths[$1 - 1]} f
+  for f in "$student_dir/$rel" "$student_dir/${rel#*/}" "$root/tasks/$rel"; do
+    [[ -f $f ]] && { realpath "$f"; return; }
+  done
+}
+task_undone() { grep -v '^[[:space:]]*//' "$(task_file "$1")" | grep -q 'PATHLAB_TODO('; }
+shown_as() { local f; f=$(task_file "$1"); echo "${f#"$root"/}"; }  # as __FILE__ names it
+undone=()
+for n in 1 2 3 4 5 6 7; do task_undone $n && undone+=("$n"); done
+echo "$("$pathlab" --version); student files still undone (PATHLAB_TODO left): ${undone[*]:-none}"
+
+# check_todo_lines STDERR_FILE WHAT: every "task N not implemented: FILE:LINE
+# (TODO TN.k)" line names task N's student file and a line of it that calls
+# PATHLAB_TODO("TN.k"), so only undone tasks print one.
+check_todo_lines() {
+  local line n file number tag ok=1
+  while IFS= read -r line; do
+    if [[ ! $line =~ ^task\ ([0-9]+)\ not\ implemented:\ (.+):([0-9]+)\ \(TODO\ (T([0-9]+)\.[0-9]+)\)$ ]]; then
+      fail "$2: malformed TODO line: $line"; ok=0; continue
+    fi
+    n=${BASH_REMATCH[1]} file=${BASH_REMATCH[2]} number=${BASH_REMATCH[3]} tag=${BASH_REMATCH[4]}
+    if [[ ${BASH_REMATCH[5]} != "$n" || $file != "$(shown_as "$n")" ]] ||
+       ! sed -n "${number}p" "$(task_file "$n")" | grep -qF "PATHLAB_TODO(\"$tag\")"; then
+      fail "$2: \"$line\" does not point at a PATHLAB_TODO of task $n's file $(shown_as "$n")"; ok=0
+    fi
+  done < <(grep -E '^task [0-9]+ not implemented:' "$1")
+  ((ok)) && pass
+}
+
 # --- renders -------------------------------------------------------------
-"$pathlab" -q -s 2 -d 80x60 -o "$work/default.png" && [[ -s $work/default.png ]] \
-  && pass || fail "default scene does not render to PNG"
+"$pathlab" -q -s 2 -d 80x60 -o "$work/default.png" 2>"$work/default.err" && [[ -s $work/default.png ]] \
+  && pass || fail "default scene does not render to PNG: $(cat "$work/default.err")"
+check_todo_lines "$work/default.err" "default render"
 # (files differ in their DateTime stamp, so compare pixels: any bit changed gives RMSE > 0)
 "$pathlab" -q -s 3 -r 64 48 -t 1 --seed 5 -o "$work/one.exr"
 out=$("$pathlab" -q -s 3 -r 64 48 -t 2 --seed 5 -o "$work/two.exr" --ref "$work/one.exr" 2>/dev/null)
@@ -26,12 +70,20 @@ grep -q "RMSE" <<< "$out" && grep -q "relMSE" <<< "$out" && pass || fail "--ref 
 out=$("$pathlab" -q -s 1 -d 32x24 --integrator normals -o "$work/normals.png" 2>&1) && pass || fail "normals integrator: $out"
 "$pathlab" --help > "$work/help.txt" && grep -q -- "--seed" "$work/help.txt" && pass || fail "--help"
 
-# Every task on the student stubs: still renders and exits 0, and says
-# which TODOs are missing.
-err=$("$stubs" -q -s 1 -d 32x24 -o "$work/stubs.png" 2>&1 >/dev/null)
-[[ $? -eq 0 && -s $work/stubs.png ]] && grep -q "task 1 not implemented: tasks/01-camera-rays/camera_rays.cpp:" <<< "$err" \
-  && pass || fail "all-stubs render: $err"
-"$stubs" debug --task 2 --view normals -d 32x24 -o "$work/stub-normals.png" >/dev/null 2>&1 && pass || fail "all-stubs debug view"
+# Every task on the student files: still renders and exits 0, and says which
+# TODOs are missing: task 1's (every render reaches it) when its file is
+# undone, and none of a done task.
+"$stubs" -q -s 1 -d 32x24 -o "$work/stubs.png" >/dev/null 2>"$work/stubs.err"
+rc=$?
+[[ $rc -eq 0 && -s $work/stubs.png ]] && pass || fail "all-stubs render: exit $rc: $(cat "$work/stubs.err")"
+if task_undone 1; then
+  grep -q "^task 1 not implemented: $(shown_as 1):" "$work/stubs.err" && pass ||
+    fail "all-stubs render: task 1 is undone but no \"task 1 not implemented: $(shown_as 1):\" line: $(cat "$work/stubs.err")"
+fi
+check_todo_lines "$work/stubs.err" "all-stubs render"
+"$stubs" debug --task 2 --view normals -d 32x24 -o "$work/stub-normals.png" >/dev/null 2>"$work/stub-view.err" && pass ||
+  fail "all-stubs debug view: $(cat "$work/stub-view.err")"
+check_todo_lines "$work/stub-view.err" "all-stubs debug view"
 
 # Ctrl-C (SIGINT) and SIGTERM write the image rendered so far and exit 130;
 # the file carries the samples per pixel reached, and the temporary file it

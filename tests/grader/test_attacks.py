@@ -94,7 +94,9 @@ def main() -> int:
     warm = work / "reference.json"
     subprocess.run([sys.executable, str(root / "tools/grade"), str(root / "solutions"), "--tasks", "1", "--out",
                     str(warm), "--build-dir", str(grade_build), "--sandbox", sandbox], capture_output=True, timeout=1500)
-    if not warm.exists() or json.loads(warm.read_text())["score"] != 24:
+    # Task 1's points as its judge lists them: every attack must see the same manifest.
+    full = sum(t["max_score"] for t in json.loads(warm.read_text())["tests"]) if warm.exists() else None
+    if not full or json.loads(warm.read_text())["score"] != full:
         failures.append(f"reference: not full marks with --sandbox {sandbox}")
     before_tree = tree_digest()
     judge_before = judge_digest()
@@ -124,8 +126,8 @@ def main() -> int:
             report = json.loads(report_text)
             points = sum(t["max_score"] for t in report["tests"])
             wanted = points if expect == "full" else 0
-            if points != 24:
-                problems.append(f"the task's manifest changed: {points} points instead of 24")
+            if points != full:
+                problems.append(f"the task's manifest changed: {points} points instead of {full}")
             if report["score"] != wanted:
                 problems.append(f"scored {report['score']:g}, expected {wanted}")
             if SECRET in report_text:

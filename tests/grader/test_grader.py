@@ -69,7 +69,7 @@ def expect(task, broken_prefixes, symptom):
         failures.append(f"task {task}: tests away from the broken step should keep their points")
 
 
-expect(2, ["T2.1"], "SIGSEGV")                    # the triangle test crashes; spheres still pass
+expect(2, ["T2.1", "T2.3 image"], "SIGSEGV")      # the triangle test crashes (the image has triangles); spheres pass
 expect(3, ["T3.2", "T3.3", "T3.4"], "timed out")  # the build never ends; the slab test still passes
 expect(5, ["T5.2"], "")                           # NaN radiance; the sampler still passes
 if out.stat().st_size > 1_000_000:
