@@ -17,22 +17,7 @@ trap 'rm -rf "$out"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
-# Which student files the build compiled (cmake/PathLabTasks.cmake's lookup:
-# PATHLAB_STUDENT_DIR as the tasks/ tree or flat, else tasks/), and which of
-# them are undone: a PATHLAB_TODO call left outside comments.
-task_paths=(01-camera-rays/camera_rays.cpp 02-intersection/intersection.cpp 03-bvh/bvh.cpp
-            04-direct-lighting/direct_lighting.cpp 05-path-tracing/path_tracing.cpp
-            06-mirror-glass/mirror_glass.cpp 07-environment/environment.cpp)
-student_dir=$(sed -n 's/^PATHLAB_STUDENT_DIR:PATH=//p' "$build/CMakeCache.txt" 2>/dev/null)
-student_dir=${student_dir:-$root/tasks}
-task_file() {  # task_file N
-  local rel=${task_paths[$1 - 1]} f
-  for f in "$student_dir/$rel" "$student_dir/${rel#*/}" "$root/tasks/$rel"; do
-    [[ -f $f ]] && { realpath "$f"; return; }
-  done
-}
-task_undone() { grep -v '^[[:space:]]*//' "$(task_file "$1")" | grep -q 'PATHLAB_TODO('; }
-shown_as() { local f; f=$(task_file "$1"); echo "${f#"$root"/}"; }  # as __FILE__ names it
+source "$root/tests/support/student_tasks.sh"
 # done_in PROGRAM N...: every task N runs finished code in PROGRAM: the
 # reference, or a student file without TODOs (`--version` says which is linked).
 done_in() {
