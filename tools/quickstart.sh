@@ -10,7 +10,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(build-essential cmake ninja-build pkg-config git python3 libglm-dev libopenimageio-dev doctest-dev
-          nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libpugixml-dev libembree-dev
+          nlohmann-json3-dev libcli11-dev libpugixml-dev libembree-dev
           libglfw3-dev libimgui-dev python3-matplotlib)
 # The tests also start the GUI on a virtual display (Xvfb with Mesa's
 # software OpenGL) and look at its screenshots with ImageMagick, and run the

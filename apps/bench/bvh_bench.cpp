@@ -47,13 +47,16 @@ Scene loadMesh(const std::string& requested, int triangles, std::string& descrip
     // The scanned bunny from the optional data folder, else its stand-in.
     const char* data = std::getenv("PATHLAB_DATA_DIR");
     if (data && *data) path = std::string(data) + "/models/stanford-bunny.obj";
-    if (path.empty() || !std::filesystem::exists(path)) {
+    std::error_code missing;
+    if (path.empty() || !std::filesystem::exists(path, missing)) {
       Scene scene = scanLikeScene();
       description = scene.meshes[0].name;
       return scene;
     }
   }
-  std::string absolute = std::filesystem::absolute(path).string();
+  std::error_code unresolved;  // then the path as given: the loader names what is wrong with it
+  std::string absolute = std::filesystem::absolute(path, unresolved).string();
+  if (unresolved) absolute = path;
   Json scene = {{"meshes", Json::array({Json{{"obj", absolute}}})}};
   description = path;
   return loadSceneFromJson(scene.dump(), path, "");

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "linked_tasks.h"
+#include "pathlab/input_file.h"
 #include "pathlab/error.h"
 #include "pathlab/parallel.h"
 #include "pathlab/render.h"
@@ -206,7 +207,7 @@ int runConvergeBench(const ConvergeOptions& options) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   Scene scene = loadScene(options.scene);
   const int threads = options.threads > 0 ? options.threads : defaultThreadCount();
-  fs::create_directories(options.outDir);
+  createFolders(options.outDir);
   const std::string stem = fs::path(options.scene).stem().string();
   const LinkedTasks linked = linkedTasks();
   const std::string code = describeAllTasks(linked);
@@ -246,7 +247,8 @@ int runConvergeBench(const ConvergeOptions& options) {
   Image reference;
   bool cached = false;
   double referenceSeconds = 0.0;
-  if (fs::exists(referencePath)) {
+  std::error_code missing;
+  if (fs::exists(referencePath, missing)) {
     reference = readImage(referencePath.string());
     cached = true;
     std::printf("reference image: %s (cached)\n", referencePath.string().c_str());

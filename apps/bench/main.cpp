@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
     if (renderCommand->parsed()) return pathlab::bench::runRenderBench(render);
     if (convergeCommand->parsed()) return pathlab::bench::runConvergeBench(converge);
   } catch (const pathlab::Error& e) {
-    std::fprintf(stderr, "pathlab-bench: %s\n", e.what());
+    pathlab::printError("pathlab-bench", e.what());
     return 1;
   }
   return 0;

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "demos.h"
+#include "pathlab/input_file.h"
 #include "pathlab/error.h"
 #ifdef PATHLAB_HAVE_GUI
 #include "demo_window.h"
@@ -24,8 +25,9 @@ namespace fs = std::filesystem;
 std::string outputPath(const std::string& out, const std::string& name) {
   if (out.empty()) return name + ".png";
   if (fs::path(out).extension() == ".png") return out;
-  if (fs::is_directory(out) || out.back() == '/') {
-    fs::create_directories(out);
+  std::error_code notFolder;
+  if (fs::is_directory(out, notFolder) || out.back() == '/') {
+    createFolders(out);
     return (fs::path(out) / (name + ".png")).string();
   }
   return out + ".png";
@@ -116,7 +118,7 @@ int main(int argc, char** argv) {
     if (name.empty()) throw Error("give a demo name (pathlab-demo --list shows them)");
     return run(name, out, settings, gui, screenshot);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "pathlab-demo: %s\n", e.what());
+    pathlab::printError("pathlab-demo", e.what());
     return 1;
   }
 }

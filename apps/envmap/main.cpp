@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <string>
 
+#include "pathlab/input_file.h"
 #include "pathlab/error.h"
 #include "pathlab/image.h"
 #include "pathlab/tasks/environment.h"
@@ -127,7 +128,7 @@ int main(int argc, char** argv) {
   }
   try {
     const std::filesystem::path out = argv[1];
-    std::filesystem::create_directories(out);
+    createFolders(out.string());
     write(skyWithSun(800, 400), out / "sky-sun.exr");  // under 2 MB
     write(studio(512, 256), out / "studio.exr");
     Image hot(64, 32);
@@ -136,7 +137,7 @@ int main(int argc, char** argv) {
     write(Image(64, 32, Color(1.0f)), out / "constant.exr");
     write(Image(64, 32), out / "black.exr");
   } catch (const Error& e) {
-    std::fprintf(stderr, "pathlab-envmap: %s\n", e.what());
+    printError("pathlab-envmap", e.what());
     return 1;
   }
   return 0;

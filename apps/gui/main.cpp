@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
   try {
     return run(args);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "pathlab-gui: %s\n", e.what());
+    pathlab::printError("pathlab-gui", e.what());
     return 1;
   }
 }

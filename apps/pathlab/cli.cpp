@@ -1,8 +1,13 @@
 #include "cli.h"
 
 #include <CLI/CLI.hpp>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <charconv>
+#include <climits>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <regex>
@@ -25,10 +30,10 @@ struct RenderArgs {
   std::string scene;
   std::optional<int> threads;  // absent: all cores
   std::optional<int> spp, lightSamples, maxDepth;
-  std::string resolution;          // -d WxH
+  std::optional<std::string> resolution;  // -d WxH (given but empty is an error)
   std::vector<int> widthHeight;    // -r W H
   std::string output = "render.png";
-  std::optional<uint64_t> seed;
+  std::string seed;  // parsed by parseSeed: CLI11 would wrap "-1" to 2^64 - 1
   std::string reference;
   std::string integrator = "path";
   bool quiet = false;
@@ -38,7 +43,7 @@ struct DebugArgs {
   int task = 0;
   std::string view;
   std::string scene;
-  std::string resolution;
+  std::optional<std::string> resolution;
   std::string output;
   std::vector<int> pixel;
   std::optional<int> depth;
@@ -49,11 +54,11 @@ struct DebugArgs {
 Scene loadSceneArg(const std::string& path) { return path.empty() ? defaultScene() : loadScene(path); }
 
 // -d WxH or -r W H into the scene's resolution (-r wins if both are given).
-void applyResolution(RenderSettings& settings, const std::string& wxh, const std::vector<int>& pair) {
-  if (!wxh.empty() && pair.empty()) {
+void applyResolution(RenderSettings& settings, const std::optional<std::string>& wxh, const std::vector<int>& pair) {
+  if (wxh && pair.empty()) {
     std::smatch m;
-    if (!std::regex_match(wxh, m, std::regex(R"((\d{1,9})[xX](\d{1,9}))"))) {
-      throw Error("-d: expected WIDTHxHEIGHT such as 800x600, got \"" + wxh + "\"");
+    if (!std::regex_match(*wxh, m, std::regex(R"((\d{1,9})[xX](\d{1,9}))"))) {
+      throw Error("-d: expected WIDTHxHEIGHT such as 800x600, got " + inQuotes(*wxh));
     }
     settings.width = std::stoi(m[1]);
     settings.height = std::stoi(m[2]);
@@ -64,23 +69,42 @@ void applyResolution(RenderSettings& settings, const std::string& wxh, const std
   } else {
     return;
   }
-  if (settings.width < 1 || settings.height < 1 || settings.width > 16384 || settings.height > 16384 ||
-      int64_t(settings.width) * settings.height > (int64_t(1) << 26)) {
-    throw Error("resolution " + std::to_string(settings.width) + "x" + std::to_string(settings.height) +
-                " is out of range (each side 1..16384, at most 67M pixels)");
+  checkResolution(settings.width, settings.height, wxh && pair.empty() ? "-d" : "-r");
+}
+
+uint64_t parseSeed(const std::string& text) {
+  uint64_t seed = 0;
+  auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
+    throw Error("--seed: expected an integer in [0, 2^64 - 1], got " + inQuotes(text));
   }
+  return seed;
 }
 
 // Fail before rendering, not after an hour, when the output cannot be written.
+// (POSIX calls, not std::filesystem's: those throw on a symlink loop or a
+// name too long, which must be an error line, not an internal error.)
 void checkOutputPath(const std::string& path) {
-  if (!isWritableImagePath(path)) {
-    throw Error(path + ": unsupported output format (use .png, .exr, .hdr or .jpg)");
-  }
-  std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  const std::string name = shown(path, 200);
+  if (path.empty()) throw Error("-o: expected an output file name");
+  if (!isWritableImagePath(path)) throw Error(name + ": unsupported output format (use .png, .exr, .hdr or .jpg)");
+  std::string parent = std::filesystem::path(path).parent_path().string();
   if (parent.empty()) parent = ".";
-  if (!std::filesystem::is_directory(parent)) throw Error(path + ": output folder does not exist");
-  if (access(parent.c_str(), W_OK) != 0) throw Error(path + ": output folder is not writable");
-  if (std::filesystem::is_directory(path)) throw Error(path + ": is a folder, expected an image file name");
+  struct stat info {};
+  if (::stat(parent.c_str(), &info) != 0) {
+    throw Error(name + ": output folder " + (errno == ENOENT ? "does not exist" : std::string("cannot be used: ") + std::strerror(errno)));
+  }
+  if (!S_ISDIR(info.st_mode)) throw Error(name + ": output folder does not exist (" + shown(parent) + " is not a folder)");
+  if (::access(parent.c_str(), W_OK) != 0) throw Error(name + ": output folder is not writable");
+  if (::stat(path.c_str(), &info) == 0) {
+    if (S_ISDIR(info.st_mode)) throw Error(name + ": is a folder, expected an image file name");
+  } else if (errno != ENOENT) {
+    throw Error(name + ": cannot write: " + std::strerror(errno));
+  }
+  if (std::filesystem::path(path).filename().string().size() + 9 > NAME_MAX) {  // + ".partial" and the dot
+    throw Error(name + ": file name too long (the temporary name it is written through must fit " +
+                std::to_string(NAME_MAX) + " bytes)");
+  }
 }
 
 int checkedCount(const char* flag, int value, int min, int max) {
@@ -91,35 +115,42 @@ int checkedCount(const char* flag, int value, int min, int max) {
   return value;
 }
 
-int runRender(const RenderArgs& args, const std::atomic<bool>& cancel) {
+int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atomic<bool>& rendering) {
   Scene scene = loadSceneArg(args.scene);
   RenderSettings& settings = scene.render;
   if (args.spp) settings.samplesPerPixel = checkedCount("-s", *args.spp, 1, 1 << 20);
   if (args.lightSamples) settings.lightSamples = checkedCount("-l", *args.lightSamples, 1, 4096);
   if (args.maxDepth) settings.maxDepth = checkedCount("-m", *args.maxDepth, 0, 1024);
-  if (args.seed) settings.seed = *args.seed;
+  if (!args.seed.empty()) settings.seed = parseSeed(args.seed);
   applyResolution(settings, args.resolution, args.widthHeight);
   RenderOptions options;
   if (args.threads) options.threads = checkedCount("-t", *args.threads, 1, 1024);
   options.progress = !args.quiet;
   options.cancel = &cancel;
   auto integrator = integratorFromName(args.integrator);
-  if (!integrator) throw Error("--integrator: unknown integrator \"" + args.integrator + "\" (path, direct, preview, normals)");
+  if (!integrator) throw Error("--integrator: unknown integrator " + inQuotes(args.integrator) + " (path, direct, preview, normals)");
   options.integrator = *integrator;
   checkOutputPath(args.output);
-  std::optional<Image> reference;
-  if (!args.reference.empty()) reference = readImage(args.reference);
+  std::optional<Image> reference;  // read and checked before an hour of rendering, not after
+  if (!args.reference.empty()) {
+    reference = readImage(args.reference);
+    if (reference->width != settings.width || reference->height != settings.height) {
+      throw Error("--ref: " + shown(args.reference, 200) + " is " + std::to_string(reference->width) + "x" +
+                  std::to_string(reference->height) + " but the render is " + std::to_string(settings.width) + "x" +
+                  std::to_string(settings.height));
+    }
+  }
 
-
+  rendering.store(true);
   RenderResult result = render(scene, options);
   const RenderStats& stats = result.stats;
   writeImage(result.image, args.output, {{"pathlab:spp", std::to_string(stats.completedSpp)},
                                          {"pathlab:scene", scene.source}});
 
   if (stats.nonFiniteSamples > 0) {
-    std::fprintf(stderr, "warning: %llu samples were NaN or Inf (first at pixel %d,%d); they count as black\n",
-                 (unsigned long long)stats.nonFiniteSamples, stats.firstNonFinitePixel->x,
-                 stats.firstNonFinitePixel->y);
+    printWarning(std::to_string(stats.nonFiniteSamples) + " samples were NaN or Inf (first at pixel " +
+                 std::to_string(stats.firstNonFinitePixel->x) + "," + std::to_string(stats.firstNonFinitePixel->y) +
+                 "); they count as black");
   }
   if (stats.interrupted) {
     std::fprintf(stderr, "interrupted: wrote %s with %d of %d samples per pixel\n", args.output.c_str(),
@@ -158,7 +189,7 @@ int runDebug(const DebugArgs& args) {
     if (view.name == args.view) chosen = &view;
   }
   if (!chosen) {
-    throw Error("debug: task " + std::to_string(args.task) + " has no view \"" + args.view + "\"" +
+    throw Error("debug: task " + std::to_string(args.task) + " has no view " + inQuotes(args.view) +
                 (available.empty() ? " (it has no views yet)" : " (views: " + available + ")"));
   }
   Scene scene = loadSceneArg(args.scene);
@@ -188,7 +219,7 @@ int runDebug(const DebugArgs& args) {
 
 }  // namespace
 
-int runCli(int argc, char** argv, const std::atomic<bool>& cancel) {
+int runCli(int argc, char** argv, const std::atomic<bool>& cancel, std::atomic<bool>& rendering) {
   CLI::App app{"PathLab: a Monte Carlo path tracer to learn from.\n"
                "Renders SCENE (a .json file; none = the embedded Cornell box) to an image."};
   app.set_version_flag("--version", "pathlab 0.1 (tasks " PATHLAB_TASK_SUMMARY ")");
@@ -232,14 +263,14 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "pathlab: %s (see pathlab --help)\n", e.what());
+    printError("pathlab", std::string(e.what()) + " (see pathlab --help)");
     return 1;
   }
   try {
     if (debugCommand->parsed()) return runDebug(debug);
-    return runRender(render, cancel);
+    return runRender(render, cancel, rendering);
   } catch (const Error& e) {
-    std::fprintf(stderr, "pathlab: %s\n", e.what());
+    printError("pathlab", e.what());
     return 1;
   }
 }

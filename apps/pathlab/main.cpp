@@ -3,13 +3,25 @@
 #include <cstdio>
 #include <exception>
 
+#include <unistd.h>
+
 #include "cli.h"
+#include "pathlab/error.h"
 
 namespace {
 
 std::atomic<bool> gCancel{false};
+std::atomic<bool> gRendering{false};
 
+// While rendering, a signal asks the render to stop (the image so far is
+// written); before that (reading a scene, building the tree) there is
+// nothing to save, so the process ends at once, as the user asked.
 extern "C" void onInterrupt(int signal) {
+  if (!gRendering.load()) {
+    static const char message[] = "pathlab: interrupted before rendering began\n";
+    [[maybe_unused]] ssize_t ignored = ::write(2, message, sizeof message - 1);
+    ::_exit(130);
+  }
   gCancel.store(true);
   std::signal(signal, SIG_DFL);  // a second Ctrl-C ends the program at once
 }
@@ -20,9 +32,9 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onInterrupt);
   try {
-    return pathlab::runCli(argc, argv, gCancel);
+    return pathlab::runCli(argc, argv, gCancel, gRendering);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "pathlab: internal error: %s\n", e.what());
+    pathlab::printError("pathlab", std::string("internal error: ") + e.what());
     return 2;
   }
 }

@@ -12,6 +12,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cerrno>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -21,53 +23,17 @@
 
 #include "pathlab/aabb.h"
 #include "pathlab/error.h"
+#include "pathlab/input_file.h"
 #include "pathlab/scene_io.h"
 
 namespace pathlab {
 namespace {
 
-// A message line safe to print: names in the file (and the file's own name)
-// can hold anything, so control characters (C0, DEL, C1, the Unicode line
-// separators and bidirectional overrides) and bytes that are not UTF-8
-// become \xNN escapes; other UTF-8 passes through.
-std::string printable(std::string_view text) {
-  std::string out;
-  auto escape = [&](unsigned char byte) {
-    char buffer[5];
-    std::snprintf(buffer, sizeof buffer, "\\x%02x", byte);
-    out += buffer;
-  };
-  for (size_t i = 0; i < text.size();) {
-    const auto byte = static_cast<unsigned char>(text[i]);
-    if (byte < 0x80) {
-      if (byte < 0x20 || byte == 0x7f) escape(byte);
-      else out += char(byte);
-      ++i;
-      continue;
-    }
-    // A UTF-8 sequence: its length, code point and validity.
-    const size_t length = byte >= 0xf0 ? 4 : byte >= 0xe0 ? 3 : byte >= 0xc0 ? 2 : 0;
-    uint32_t code = length == 4 ? byte & 0x07u : length == 3 ? byte & 0x0fu : byte & 0x1fu;
-    bool valid = length != 0 && i + length <= text.size();
-    for (size_t k = 1; valid && k < length; ++k) {
-      const auto next = static_cast<unsigned char>(text[i + k]);
-      valid = (next & 0xc0) == 0x80;
-      code = (code << 6) | (next & 0x3fu);
-    }
-    static constexpr uint32_t kSmallest[5] = {0, 0, 0x80, 0x800, 0x10000};
-    valid = valid && code >= kSmallest[length] && code <= 0x10ffff && !(code >= 0xd800 && code <= 0xdfff);
-    const bool control = code <= 0x9f || code == 0x2028 || code == 0x2029 || (code >= 0x202a && code <= 0x202e) ||
-                         (code >= 0x2066 && code <= 0x2069);
-    if (!valid || control) {
-      escape(byte);  // one byte at a time: the rest follow as escapes or text
-      ++i;
-      continue;
-    }
-    out.append(text.substr(i, length));
-    i += length;
-  }
-  return out;
-}
+std::string printable(std::string_view text) { return printableLine(text); }
+
+// Deeper XML is refused: COLLADA files nest about 10 levels, and reading
+// nodes recurses once per level.
+constexpr size_t kMaxXmlDepth = 256;
 
 void warn(const std::string& file, const std::string& what) {
   std::fputs(("warning: " + printable(file + ": " + what) + "\n").c_str(), stderr);
@@ -100,7 +66,8 @@ bool usableLinearPart(const glm::mat4& m) {
 class ColladaReader {
  public:
   explicit ColladaReader(const std::string& path) : file_(path) {
-    pugi::xml_parse_result parsed = document_.load_file(path.c_str());
+    const std::string text = readInputFile(path, "COLLADA file", kMaxColladaBytes);
+    pugi::xml_parse_result parsed = document_.load_buffer(text.data(), text.size());
     if (!parsed) {
       throw Error(printable(path + ": invalid XML at byte " + std::to_string(parsed.offset) + ": " + parsed.description()));
     }
@@ -118,6 +85,7 @@ class ColladaReader {
     if (scene_.meshes.empty() && scene_.spheres.empty()) fail("library_visual_scenes", "the scene has no geometry");
     scene_.indexPrimitives();
     placeCamera();
+    checkSceneLimits(scene_);
     reportRepairs();
     return std::move(scene_);
   }
@@ -127,10 +95,18 @@ class ColladaReader {
     throw Error(printable(file_ + ": " + where + ": " + what));
   }
 
-  void indexIds(pugi::xml_node node) {
-    for (pugi::xml_node child : node.children()) {
-      if (const char* id = child.attribute("id").value(); *id) ids_[id] = child;
-      indexIds(child);
+  // Every element with an id, walked without recursion; refuses nesting
+  // deeper than kMaxXmlDepth.
+  void indexIds(pugi::xml_node root) {
+    std::vector<std::pair<pugi::xml_node, size_t>> pending{{root, 0}};
+    while (!pending.empty()) {
+      auto [node, depth] = pending.back();
+      pending.pop_back();
+      if (depth > kMaxXmlDepth) {
+        fail(node.path().substr(0, 80), "elements nest deeper than " + std::to_string(kMaxXmlDepth) + " levels");
+      }
+      if (const char* id = node.attribute("id").value(); *id) ids_[id] = node;
+      for (pugi::xml_node child : node.children()) pending.emplace_back(child, depth + 1);
     }
   }
 
@@ -148,13 +124,27 @@ class ColladaReader {
     while (in >> token) {
       char* end = nullptr;
       float v = std::strtof(token.c_str(), &end);
-      if (*end != '\0' || !std::isfinite(v)) fail(where, "expected numbers, got \"" + token + "\"");
+      if (*end != '\0' || !std::isfinite(v)) fail(where, "expected numbers, got " + inQuotes(token, 40));
       values.push_back(v);
     }
     if (expected && values.size() != expected) {
       fail(where, "expected " + std::to_string(expected) + " numbers, got " + std::to_string(values.size()));
     }
     return values;
+  }
+
+  // An integer attribute in [min, max] (a missing one is `fallback`).
+  long integerAttribute(pugi::xml_node node, const char* name, long fallback, long max, const std::string& where) const {
+    pugi::xml_attribute attribute = node.attribute(name);
+    if (!attribute) return fallback;
+    const std::string text = attribute.value();
+    char* end = nullptr;
+    errno = 0;
+    const long value = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || errno == ERANGE || value < 0 || value > max) {
+      fail(where, std::string(name) + "=" + inQuotes(text, 40) + " is not an integer in [0, " + std::to_string(max) + "]");
+    }
+    return value;
   }
 
   std::vector<long> indices(pugi::xml_node node, const std::string& where) const {
@@ -164,7 +154,7 @@ class ColladaReader {
     while (in >> token) {
       char* end = nullptr;
       long v = std::strtol(token.c_str(), &end, 10);
-      if (*end != '\0' || v < 0) fail(where, "expected non-negative indices, got \"" + token + "\"");
+      if (*end != '\0' || v < 0 || v == LONG_MAX) fail(where, "expected non-negative indices, got " + inQuotes(token, 40));
       values.push_back(v);
     }
     return values;
@@ -297,7 +287,11 @@ class ColladaReader {
     if (std::string(node.name()) == "vertices") {  // <vertices> forwards to its POSITION source
       for (pugi::xml_node input : node.children("input")) {
         if (std::string(input.attribute("semantic").value()) == "POSITION") {
-          return source(input.attribute("source").value(), where + "/vertices");
+          const std::string positions = input.attribute("source").value();
+          if (std::string(resolve(positions, where + "/vertices").name()) != "source") {
+            fail(where + "/vertices", "POSITION input " + inQuotes(positions) + " must name a <source>");
+          }
+          return source(positions, where + "/vertices");
         }
       }
       fail(where, "<vertices> without a POSITION input");
@@ -327,7 +321,7 @@ class ColladaReader {
       long positionOffset = -1, normalOffset = -1, stride = 0;
       for (pugi::xml_node input : primitives.children("input")) {
         const std::string semantic = input.attribute("semantic").value();
-        const long offset = input.attribute("offset").as_int(0);
+        const long offset = integerAttribute(input, "offset", 0, 63, here + "/input");
         stride = std::max(stride, offset + 1);
         if (semantic == "VERTEX") positions = source(input.attribute("source").value(), here), positionOffset = offset;
         if (semantic == "NORMAL") normals = source(input.attribute("source").value(), here), normalOffset = offset;
@@ -335,14 +329,19 @@ class ColladaReader {
       if (positionOffset < 0) fail(here, "no VERTEX input");
       const std::vector<long> p = indices(primitives.child("p"), here + "/p");
       std::vector<long> counts;
-      const long polygons = primitives.attribute("count").as_int(0);
+      // Sizes checked against the indices actually present before anything
+      // is allocated from them (a count of 300 million cost 2.4 GB).
+      const long polygons = integerAttribute(primitives, "count", 0, long(p.size()), here);
       if (kind == "polylist") {
         counts = indices(primitives.child("vcount"), here + "/vcount");
       } else {
         counts.assign(size_t(polygons), 3);
       }
       long corners = 0;
-      for (long c : counts) corners += c;
+      for (long c : counts) {
+        if (c > long(p.size()) || corners > long(p.size())) break;  // disagrees below, without overflow
+        corners += c;
+      }
       if (long(counts.size()) != polygons || corners * stride != long(p.size())) {
         fail(here, "count, vcount and <p> disagree (" + std::to_string(p.size()) + " indices for " +
                        std::to_string(corners) + " corners of " + std::to_string(stride) + ")");
@@ -606,7 +605,15 @@ class ColladaReader {
     camera.lookAt = center;
     camera.position = center - forward * distance;
     camera.up = trueUp;
-    scene_.render.height = std::max(1, int(std::lround(float(scene_.render.width) / aspect)));
+    const double height = std::max(1.0, std::round(double(scene_.render.width) / double(aspect)));
+    if (height > double(kMaxImageSide)) {
+      char asked[96];
+      std::snprintf(asked, sizeof asked, "%g asks for an image %d pixels wide and %.0f tall", double(aspect),
+                    scene_.render.width, height);
+      fail("camera/aspect_ratio", std::string(asked) + " (at most " + std::to_string(kMaxImageSide) + " a side)");
+    }
+    scene_.render.height = int(height);
+    checkResolution(scene_.render.width, scene_.render.height, printable(file_ + ": camera/aspect_ratio"));
   }
 
   // A camera whose transform gives no direction (singular or not finite):

@@ -1,5 +1,6 @@
 #include "pathlab/image.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <mutex>
 
 #include "pathlab/error.h"
+#include "pathlab/input_file.h"
 
 namespace pathlab {
 namespace {
@@ -97,18 +99,17 @@ bool isWritableImagePath(const std::string& path) {
 
 void writeImage(const Image& image, const std::string& finalPath, const ImageMetadata& metadata) {
   if (!isWritableImagePath(finalPath)) {
-    throw Error(finalPath + ": unsupported image format (use .png, .exr, .hdr or .jpg)");
+    throw Error(shown(finalPath, 200) + ": unsupported image format (use .png, .exr, .hdr or .jpg)");
   }
-  // Write a temporary file beside the target and rename it: an interrupted
-  // write never leaves a truncated image behind.
-  const std::filesystem::path target(finalPath);
-  std::string partialName = ".";
-  partialName.append(target.stem().string()).append(".partial").append(target.extension().string());
-  const std::string path = (target.parent_path() / partialName).string();
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw Error(finalPath + ": cannot create image writer: " + OIIO::geterror());
-
-  const std::string ext = lowerExtension(path);
+  // Encode in memory, then write the bytes through one checked writer: a
+  // full disk or an interrupted write never leaves a truncated image (the
+  // codecs' own file writes do not report every failure: a full disk gave a
+  // truncated PNG and exit 0, libjpeg printed its own line).
+  const std::string ext = lowerExtension(finalPath);
+  auto out = OIIO::ImageOutput::create(ext.substr(1));
+  if (!out || !out->supports("ioproxy")) {
+    throw Error(shown(finalPath, 200) + ": cannot create an in-memory " + ext + " writer: " + oneLine(OIIO::geterror()));
+  }
   const bool linear = isFloatFormat(ext);
   OIIO::ImageSpec spec(image.width, image.height, 3, linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:ColorSpace", linear ? "Linear" : "sRGB");
@@ -116,26 +117,20 @@ void writeImage(const Image& image, const std::string& finalPath, const ImageMet
   if (linear) spec.attribute("compression", "zip");
   for (const auto& [key, value] : metadata) spec.attribute(key, value);
 
-  if (!out->open(path, spec)) throw Error(finalPath + ": cannot write: " + out->geterror());
-  bool ok;
-  if (linear) {
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  bool ok = out->set_ioproxy(&memory) && out->open(finalPath, spec);
+  if (ok && linear) {
     ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
-  } else {
+  } else if (ok) {
     ok = out->write_image(OIIO::TypeDesc::UINT8, encodeSrgb8(image).data());
   }
-  if (!ok || !out->close()) {
-    std::string why = out->geterror();
-    std::error_code ignored;
-    std::filesystem::remove(path, ignored);
-    throw Error(finalPath + ": cannot write: " + why);
-  }
-  std::error_code renamed;
-  std::filesystem::rename(path, finalPath, renamed);
-  if (renamed) throw Error(finalPath + ": cannot write: " + renamed.message());
+  if (!ok || !out->close()) throw Error(shown(finalPath, 200) + ": cannot encode image: " + oneLine(out->geterror()));
+  writeFileAtomically(finalPath, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 Image readImage(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw Error(path + ": no such image file");
+  const size_t fileBytes = requireRegularFile(path, "image file");
   // OpenImageIO's own limits on what a header may claim: a truncated EXR
   // claiming a huge image made OpenEXR allocate 1.8 GB before failing
   // (found by fuzzing). 1 GB covers an 8192 x 4096 map of 4 float channels.
@@ -152,21 +147,21 @@ Image readImage(const std::string& path) {
   std::string format = std::filesystem::path(path).extension().string();
   if (!format.empty()) format.erase(0, 1);
   auto in = OIIO::ImageInput::create(format.empty() ? path : format);
-  if (!in) throw Error(path + ": cannot read image: " + oneLine(OIIO::geterror()));
+  if (!in) throw Error(shown(path, 200) + ": cannot read image: " + oneLine(OIIO::geterror()));
   OIIO::ImageSpec openedSpec;
   if (!in->open(path, openedSpec)) {
-    throw Error(path + ": cannot read image as a ." + format + " file: " + oneLine(in->geterror()));
+    throw Error(shown(path, 200) + ": cannot read image as a ." + format + " file: " + oneLine(in->geterror()));
   }
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
-    throw Error(path + ": image has no pixels");
+    throw Error(shown(path, 200) + ": image has no pixels");
   }
   // At most 2^25 pixels (8192 x 4096): the image is allocated from the
   // header before any pixel is read, so a truncated file claiming a huge
   // size must not cost more than that (400 MB; fuzzing found a 1.8 GB case).
   const int64_t pixels = int64_t(spec.width) * spec.height;
   if (pixels > (int64_t(1) << 25)) {
-    throw Error(path + ": image is too large (" + std::to_string(spec.width) + "x" +
+    throw Error(shown(path, 200) + ": image is too large (" + std::to_string(spec.width) + "x" +
                 std::to_string(spec.height) + ", at most 33.5 million pixels)");
   }
   // Nor may a small file claim a big image: no codec these formats use packs
@@ -175,10 +170,8 @@ Image readImage(const std::string& path) {
   // size is corrupt. Checked above 2^22 pixels only, where the image costs
   // 48 MB. (Fuzzing: a 576-byte EXR claiming 7501926 x 4 cost 2 GB under ASan.)
   const int64_t claimedBytes = pixels * spec.nchannels * int64_t(spec.format.size());
-  std::error_code unknownSize;  // size -1 on error: then no large image
-  const auto fileBytes = int64_t(std::filesystem::file_size(path, unknownSize));
-  if (pixels > (int64_t(1) << 22) && claimedBytes > 4096 * fileBytes) {
-    throw Error(path + ": image is truncated or corrupt: its header claims " + std::to_string(spec.width) + "x" +
+  if (pixels > (int64_t(1) << 22) && claimedBytes > 4096 * int64_t(fileBytes)) {
+    throw Error(shown(path, 200) + ": image is truncated or corrupt: its header claims " + std::to_string(spec.width) + "x" +
                 std::to_string(spec.height) + " pixels but the file has only " + std::to_string(fileBytes) +
                 " bytes");
   }
@@ -186,7 +179,7 @@ Image readImage(const std::string& path) {
   const int channels = spec.nchannels >= 3 ? 3 : 1;
   Image image(spec.width, spec.height);
   if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, image.pixels.data(), sizeof(Color))) {
-    throw Error(path + ": cannot read image: " + oneLine(in->geterror()));
+    throw Error(shown(path, 200) + ": cannot read image: " + oneLine(in->geterror()));
   }
   const bool decodeSrgb = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
                           spec.format.basetype == OIIO::TypeDesc::UINT16;

@@ -2,19 +2,18 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
-#include <tiny_obj_loader.h>
 
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <unordered_map>
 
 #include "pathlab/error.h"
+#include "pathlab/input_file.h"
+#include "pathlab/obj_file.h"
 #include "pathlab/procedural.h"
 
 namespace pathlab {
@@ -23,10 +22,14 @@ namespace {
 using Json = nlohmann::json;
 namespace fs = std::filesystem;
 
-// Limits that keep a typo from asking for terabytes.
-constexpr int kMaxResolution = 16384;
-constexpr int64_t kMaxPixels = int64_t(1) << 26;  // 67 M pixels
+// Limits that keep a typo from asking for terabytes (image size: scene.h).
 constexpr int kMaxSpp = 1 << 20;
+// Deeper JSON is refused while parsing: nothing in a scene nests past 5
+// levels, and describing a value back (or destroying it) must not recurse
+// 100,000 levels deep.
+constexpr int kMaxJsonDepth = 64;
+// Keys longer than this get no did-you-mean (edit distance is quadratic).
+constexpr size_t kMaxSuggestedKey = 64;
 constexpr int kMaxDepth = 1024;
 
 size_t editDistance(const std::string& a, const std::string& b) {
@@ -44,12 +47,13 @@ size_t editDistance(const std::string& a, const std::string& b) {
   return row[b.size()];
 }
 
-std::string inQuotes(const std::string& s) { return "\"" + s + "\""; }
-
+// A value named in a message, in a few words: never its whole text (a
+// 200 MB string or a deep array is described, not echoed).
 std::string describe(const Json& j) {
-  std::string text = j.dump();
-  if (text.size() > 40) text = text.substr(0, 37) + "...";
-  return std::string(j.type_name()) + " " + text;
+  if (j.is_array()) return "array of " + std::to_string(j.size()) + " elements";
+  if (j.is_object()) return "object of " + std::to_string(j.size()) + " keys";
+  if (j.is_string()) return "string " + inQuotes(j.get_ref<const std::string&>(), 40);
+  return std::string(j.type_name()) + " " + j.dump();
 }
 
 // Where we are in the file: its name for messages and the folder that
@@ -72,6 +76,7 @@ class Object {
       std::string best;
       size_t bestDistance = SIZE_MAX;
       for (const std::string& candidate : allowed) {
+        if (key.size() > kMaxSuggestedKey) break;
         size_t d = editDistance(key, candidate);
         if (d < bestDistance) bestDistance = d, best = candidate;
       }
@@ -114,7 +119,7 @@ class Object {
     }
     if (value < double(min) || value > double(max)) {
       fail(field(key), "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
-                           "], got " + j.dump());
+                           "], got " + j.dump());  // a number
     }
     return j.is_number_unsigned() ? int64_t(std::min<uint64_t>(j.get<uint64_t>(), uint64_t(INT64_MAX)))
                                   : int64_t(value);
@@ -129,7 +134,7 @@ class Object {
     for (int i = 0; i < 3; ++i) {
       if (c[i] < 0.0f || c[i] > maxValue) {
         std::string range = maxValue == FLT_MAX ? "non-negative" : "in [0, 1] (more would create energy)";
-        fail(field(key), "expected colour components " + range + ", got " + at(key).dump());
+        fail(field(key), "expected colour components " + range + ", got " + at(key).dump());  // 3 numbers
       }
     }
     return c;
@@ -150,7 +155,7 @@ class Object {
     if (!j.is_number()) fail(where, "expected a number, got " + describe(j));
     double value = j.get<double>();
     if (!std::isfinite(value) || std::abs(value) > double(FLT_MAX)) {
-      fail(where, "expected a finite number, got " + j.dump());
+      fail(where, "expected a finite number, got " + j.dump());  // a number
     }
     return float(value);
   }
@@ -177,7 +182,7 @@ Camera parseCamera(const Object& o) {
   camera.up = o.vec3("up", camera.up);
   camera.vfovDegrees = o.number("vfov", camera.vfovDegrees);
   if (!(camera.vfovDegrees > 0.0f && camera.vfovDegrees < 180.0f)) {
-    o.fail(o.field("vfov"), "expected degrees in (0, 180), got " + o.at("vfov").dump());
+    o.fail(o.field("vfov"), "expected degrees in (0, 180), got " + o.at("vfov").dump());  // a number
   }
   if (glm::length(camera.lookAt - camera.position) == 0.0f) {
     o.fail(o.field("look_at"), "must differ from position");
@@ -188,12 +193,9 @@ Camera parseCamera(const Object& o) {
 
 RenderSettings parseRender(const Object& o) {
   RenderSettings r;
-  r.width = int(o.integer("width", r.width, 1, kMaxResolution));
-  r.height = int(o.integer("height", r.height, 1, kMaxResolution));
-  if (int64_t(r.width) * r.height > kMaxPixels) {
-    o.fail(o.field("width"), "image of " + std::to_string(r.width) + "x" + std::to_string(r.height) +
-                                 " pixels is too large");
-  }
+  r.width = int(o.integer("width", r.width, 1, kMaxImageSide));
+  r.height = int(o.integer("height", r.height, 1, kMaxImageSide));
+  checkResolution(r.width, r.height, o.source().name + ": " + o.field("width"));
   r.samplesPerPixel = int(o.integer("spp", r.samplesPerPixel, 1, kMaxSpp));
   r.lightSamples = int(o.integer("light_samples", r.lightSamples, 1, 4096));
   r.maxDepth = int(o.integer("max_depth", r.maxDepth, 0, kMaxDepth));
@@ -227,7 +229,7 @@ Material parseMaterial(const Source& source, const Json& j, const std::string& p
     m.emission = o.color("emission", m.emission);
   } else {
     Object o(source, j, path, {"type"});  // reports a non-object or a non-string type first
-    o.fail(o.field("type"), "unknown material type " + j["type"].dump() +
+    o.fail(o.field("type"), "unknown material type " + inQuotes(j["type"].get<std::string>()) +
                                 " (expected \"diffuse\", \"mirror\" or \"glass\")");
   }
   return m;
@@ -257,62 +259,13 @@ glm::mat4 parseTransform(const Object& o) {
 
 TriangleMesh loadObj(const Object& o, const std::string& file) {
   fs::path path = fs::path(file).is_absolute() ? fs::path(file) : o.source().baseDir / file;
-  if (!fs::is_regular_file(path)) {
-    o.fail(o.field("obj"), "cannot open OBJ file " + inQuotes(file) + " (looked for " + path.string() + ")");
-  }
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = true;
-  config.vertex_color = false;
-  config.mtl_search_path = path.parent_path().string();
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(path.string(), config)) {
-    std::string why = reader.Error();
-    why.erase(std::remove(why.begin(), why.end(), '\n'), why.end());
-    o.fail(o.field("obj"), path.string() + ": cannot parse OBJ: " + why);
-  }
-  const tinyobj::attrib_t& attrib = reader.GetAttrib();
-  const size_t vertexCount = attrib.vertices.size() / 3;
-  const size_t normalCount = attrib.normals.size() / 3;
-
   TriangleMesh mesh;
+  try {
+    mesh = readObjFile(path.string());
+  } catch (const Error& e) {
+    o.fail(o.field("obj"), e.what());
+  }
   mesh.name = file;
-  bool allHaveNormals = normalCount > 0;
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-    for (const tinyobj::index_t& index : shape.mesh.indices) {
-      if (index.normal_index < 0) allHaveNormals = false;
-    }
-  }
-  // Vertices are (position, normal) pairs: OBJ indexes them separately.
-  std::unordered_map<uint64_t, uint32_t> vertexOf;
-  auto vertex = [&](const tinyobj::index_t& index) -> uint32_t {
-    if (index.vertex_index < 0 || size_t(index.vertex_index) >= vertexCount) {
-      o.fail(o.field("obj"), path.string() + ": face refers to vertex " + std::to_string(index.vertex_index + 1) +
-                                 " but the file has " + std::to_string(vertexCount));
-    }
-    int normalIndex = allHaveNormals ? index.normal_index : -1;
-    if (normalIndex >= 0 && size_t(normalIndex) >= normalCount) {
-      o.fail(o.field("obj"), path.string() + ": face refers to normal " + std::to_string(normalIndex + 1) +
-                                 " but the file has " + std::to_string(normalCount));
-    }
-    uint64_t key = (uint64_t(uint32_t(index.vertex_index)) << 32) | uint32_t(normalIndex);
-    auto [it, inserted] = vertexOf.try_emplace(key, uint32_t(mesh.positions.size()));
-    if (inserted) {
-      const float* p = &attrib.vertices[3 * size_t(index.vertex_index)];
-      mesh.positions.emplace_back(p[0], p[1], p[2]);
-      if (normalIndex >= 0) {
-        const float* n = &attrib.normals[3 * size_t(normalIndex)];
-        mesh.normals.emplace_back(n[0], n[1], n[2]);
-      }
-    }
-    return it->second;
-  };
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-    const auto& indices = shape.mesh.indices;
-    for (size_t i = 0; i + 2 < indices.size(); i += 3) {
-      mesh.triangles.emplace_back(vertex(indices[i]), vertex(indices[i + 1]), vertex(indices[i + 2]));
-    }
-  }
-  if (mesh.triangles.empty()) o.fail(o.field("obj"), path.string() + ": OBJ file has no faces");
   return mesh;
 }
 
@@ -330,7 +283,7 @@ TriangleMesh inlineMesh(const Object& o) {
     glm::uvec3 tri;
     for (int k = 0; k < 3; ++k) {
       if (!t[k].is_number_unsigned() || t[k].get<uint64_t>() >= mesh.positions.size()) {
-        o.fail(where, "vertex index " + t[k].dump() + " is not in [0, " + std::to_string(mesh.positions.size()) + ")");
+        o.fail(where, "vertex index " + describe(t[k]) + " is not in [0, " + std::to_string(mesh.positions.size()) + ")");
       }
       tri[k] = uint32_t(t[k].get<uint64_t>());
     }
@@ -507,14 +460,15 @@ Scene parseScene(const Source& source, const Json& root) {
         o.fail(o.field("image"), e.what());
       }
       if (const size_t invalid = zeroInvalidRadiance(env.image)) {
-        std::fprintf(stderr, "warning: %s: %zu texels are NaN, infinite or negative; they count as black\n",
-                     env.imagePath.c_str(), invalid);
+        printWarning(env.imagePath + ": " + std::to_string(invalid) +
+                     " texels are NaN, infinite or negative; they count as black");
       }
     }
     scene.environment = std::move(env);
   }
 
   scene.indexPrimitives();
+  checkSceneLimits(scene);
   return scene;
 }
 
@@ -527,12 +481,59 @@ std::string lineAndColumn(std::string_view text, size_t byte) {
   return std::to_string(line) + ":" + std::to_string(column);
 }
 
-}  // namespace
+// The line of the n-th object key (counting from 0) in JSON text that
+// parses at least that far: a key is a string followed by ':'.
+size_t lineOfKey(std::string_view text, size_t n) {
+  size_t seen = 0, line = 1;
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\n') ++line;
+    if (text[i] != '"') continue;
+    const size_t keyLine = line;
+    for (++i; i < text.size() && text[i] != '"'; ++i) {
+      if (text[i] == '\\') ++i;
+    }
+    size_t j = i + 1;
+    while (j < text.size() && (text[j] == ' ' || text[j] == '\t' || text[j] == '\r' || text[j] == '\n')) ++j;
+    if (j < text.size() && text[j] == ':' && seen++ == n) return keyLine;
+  }
+  return line;
+}
 
-Scene loadSceneFromJson(std::string_view text, const std::string& name, const std::string& baseDir) {
-  Json root;
+// Parses with two checks nlohmann's parser does not make: nesting deeper
+// than kMaxJsonDepth, and a key given twice in one object (the parser would
+// keep the last silently).
+Json parseJson(std::string_view text, const std::string& name) {
+  std::vector<std::unordered_map<std::string, size_t>> keysOfOpenObjects;
+  size_t keyCount = 0;
+  auto check = [&](int depth, Json::parse_event_t event, Json& parsed) {
+    switch (event) {
+      case Json::parse_event_t::object_start:
+      case Json::parse_event_t::array_start:
+        if (depth >= kMaxJsonDepth) {
+          throw Error(name + ": nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels (a scene needs 5)");
+        }
+        if (event == Json::parse_event_t::object_start) keysOfOpenObjects.emplace_back();
+        break;
+      case Json::parse_event_t::object_end:
+        keysOfOpenObjects.pop_back();
+        break;
+      case Json::parse_event_t::key: {
+        const size_t ordinal = keyCount++;
+        auto [it, inserted] = keysOfOpenObjects.back().try_emplace(parsed.get<std::string>(), ordinal);
+        if (!inserted) {
+          throw Error(name + ":" + std::to_string(lineOfKey(text, ordinal)) + ": key " + inQuotes(it->first) +
+                      " is given twice in one object (first on line " + std::to_string(lineOfKey(text, it->second)) +
+                      ")");
+        }
+        break;
+      }
+      default:
+        break;
+    }
+    return true;
+  };
   try {
-    root = Json::parse(text.begin(), text.end());
+    return Json::parse(text.begin(), text.end(), check);
   } catch (const Json::out_of_range& e) {
     // e.g. a number literal too large for a double ("1e999")
     std::string what = e.what();
@@ -545,22 +546,23 @@ Scene loadSceneFromJson(std::string_view text, const std::string& name, const st
     std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
     throw Error(name + ":" + lineAndColumn(text, e.byte) + ": invalid JSON: " + detail);
   }
-  return parseScene(Source{name, fs::path(baseDir)}, root);
+}
+
+}  // namespace
+
+Scene loadSceneFromJson(std::string_view text, const std::string& name, const std::string& baseDir) {
+  return parseScene(Source{name, fs::path(baseDir)}, parseJson(text, name));
 }
 
 Scene loadScene(const std::string& path) {
-  if (fs::is_directory(path)) throw Error(path + ": is a directory, expected a scene file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot open scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
   std::string ext = fs::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (ext == ".dae") return loadColladaScene(path);
+  const std::string text = readInputFile(path, "scene file", kMaxJsonSceneBytes);
   if (ext != ".json") {
-    throw Error(path + ": unknown scene format " + inQuotes(ext) + " (expected .json or .dae)");
+    throw Error(shown(path, 200) + ": unknown scene format " + inQuotes(ext) + " (expected .json or .dae)");
   }
-  return loadSceneFromJson(text.str(), path, fs::path(path).parent_path().string());
+  return loadSceneFromJson(text, path, fs::path(path).parent_path().string());
 }
 
 Scene defaultScene() { return loadSceneFromJson(defaultSceneJson(), "<default scene>", ""); }

@@ -108,34 +108,132 @@ err=$("$pathlab" debug --task 2 --view nope 2>&1 >/dev/null)
 [[ $? -eq 1 ]] && grep -q "views: normals" <<< "$err" && pass || fail "unknown view: $err"
 
 # --- bad input: one line on stderr naming the problem, exit code 1 --------
+# Every case within 10 s and, without sanitizers, 1 GB of address space
+# (PATHLAB_CATALOG_MEMORY_LIMIT, bytes; set by CTest). Inputs named
+# generated/NAME are written at test time by tests/inputs/generate.py.
 cd "$work" || exit 1
 mkdir a-folder
+python3 "$inputs/generate.py" "$work/generated" || fail "tests/inputs/generate.py"
+limit=()
+if [[ -n ${PATHLAB_CATALOG_MEMORY_LIMIT:-} ]]; then
+  limit=(prlimit --as="$PATHLAB_CATALOG_MEMORY_LIMIT")
+  export MALLOC_ARENA_MAX=2  # glibc reserves 64 MB of address space per thread's arena otherwise
+fi
+# bad_input NAME EXPECTED_FRAGMENT ARGS...: exit 1, one stderr line holding the fragment, in time.
+bad_input() {
+  local name=$1 fragment=$2 rc lines
+  shift 2
+  timeout -s KILL 10 "${limit[@]}" "$pathlab" -q -s 1 -d 16x12 -o "$work/bad.png" "$@" >/dev/null 2>"$work/err.txt"
+  rc=$?
+  lines=$(wc -l < "$work/err.txt")
+  if [[ $rc -eq 137 ]]; then
+    fail "$name: still running after 10 s (killed)"
+  elif [[ $rc -ne 1 ]]; then
+    fail "$name: exit code $rc, expected 1: $(head -3 "$work/err.txt")"
+  elif [[ $lines -ne 1 ]]; then
+    fail "$name: $lines lines on stderr, expected 1: $(head -3 "$work/err.txt" | cut -c1-300)"
+  elif (( $(wc -c < "$work/err.txt") > 1100 )); then
+    fail "$name: an error line of $(wc -c < "$work/err.txt") bytes (user text must be capped)"
+  elif LC_ALL=C grep -q $'\x1b' "$work/err.txt"; then
+    fail "$name: a raw escape character on stderr"
+  elif ! grep -qF -- "$fragment" "$work/err.txt"; then
+    fail "$name: error lacks \"$fragment\": $(cut -c1-300 "$work/err.txt")"
+  elif [[ -e $work/bad.png ]] || ls -a "$work" | grep -q '^\.bad\.partial'; then
+    fail "$name: an output file was left behind"; rm -f "$work/bad.png" "$work"/.bad.partial.*
+  else
+    pass; return 0
+  fi
+  return 1
+}
 while IFS='|' read -r file flags fragment; do
   [[ -z $file || $file == \#* ]] && continue
   file=$(xargs <<< "$file")
   flags=$(xargs <<< "$flags")
   fragment=$(sed 's/^ *//; s/ *$//' <<< "$fragment")
   args=()
-  [[ $file != - ]] && args+=("$inputs/$file")
+  if [[ $file == generated/* ]]; then args+=("$work/$file"); elif [[ $file != - ]]; then args+=("$inputs/$file"); fi
   # shellcheck disable=SC2206
   [[ -n $flags ]] && args+=($flags)
-  timeout 20 "$pathlab" -q -s 1 -d 16x12 "${args[@]}" >/dev/null 2>"$work/err.txt"
-  rc=$?
-  lines=$(wc -l < "$work/err.txt")
-  if [[ $rc -ne 1 ]]; then
-    fail "$file $flags: exit code $rc, expected 1: $(head -3 "$work/err.txt")"
-  elif [[ $lines -ne 1 ]]; then
-    fail "$file $flags: $lines lines on stderr, expected 1: $(head -3 "$work/err.txt")"
-  elif ! grep -qF -- "$fragment" "$work/err.txt"; then
-    fail "$file $flags: error lacks \"$fragment\": $(cat "$work/err.txt")"
-  elif [[ $file != - ]] && ! grep -qF -- "$file" "$work/err.txt"; then
-    fail "$file: error does not name the file: $(cat "$work/err.txt")"
-  else
-    pass
+  if bad_input "$file $flags" "$fragment" "${args[@]}" && [[ $file != - ]] && ! grep -qF -- "$file" "$work/err.txt"; then
+    fail "$file: error does not name the file: $(cut -c1-300 "$work/err.txt")"
   fi
 done < "$inputs/catalog.txt"
-"$pathlab" -q a-folder 2>"$work/err.txt"
-[[ $? -eq 1 ]] && grep -q "is a directory" "$work/err.txt" && pass || fail "a folder as scene: $(cat "$work/err.txt")"
+bad_input "a folder as scene" "is a folder" a-folder
+
+# --- the operating system's odd files ---------------------------------------
+g=$work/generated
+mkfifo "$g/pipe.json" "$g/pipe.obj" "$g/pipe.exr" "$g/pipe.mtl"
+for name in loop.json loop.obj loop.exr loop.png; do ln -s "$name" "$g/$name"; done
+printf '{"meshes": [{"obj": "%s"}]}' pipe.obj > "$g/obj-pipe.json"
+printf '{"meshes": [{"obj": "%s"}]}' /dev/zero > "$g/obj-zero.json"
+printf '{"meshes": [{"obj": "%s"}]}' loop.obj > "$g/obj-loop.json"
+printf '{"environment": {"image": "%s"}}' pipe.exr > "$g/map-pipe.json"
+printf '{"environment": {"image": "%s"}}' loop.exr > "$g/map-loop.json"
+long=$(printf 'n%.0s' $(seq 300))
+bad_input "a FIFO as scene" "is a FIFO" "$g/pipe.json"
+bad_input "/dev/zero as scene" "is a device" /dev/zero
+bad_input "a FIFO as OBJ" "is a FIFO" "$g/obj-pipe.json"
+bad_input "/dev/zero as OBJ" "is a device" "$g/obj-zero.json"
+bad_input "a FIFO as environment map" "is a FIFO" "$g/map-pipe.json"
+bad_input "a symlink loop as scene" "Too many levels of symbolic links" "$g/loop.json"
+bad_input "a symlink loop as OBJ" "Too many levels of symbolic links" "$g/obj-loop.json"
+bad_input "a symlink loop as environment map" "Too many levels of symbolic links" "$g/map-loop.json"
+bad_input "a symlink loop as output" "Too many levels of symbolic links" -o "$g/loop.png"
+bad_input "a 300-character scene name" "File name too long" "$g/$long.json"
+bad_input "a 300-character output name" "too long" -o "$work/$long.png"
+bad_input "--seed -1" "--seed: expected an integer" --seed -1
+bad_input "-d with an empty value" "-d: expected WIDTHxHEIGHT" -d ""
+"$pathlab" -q -s 1 -d 20x10 -o "$work/small.exr" 2>/dev/null
+bad_input "--ref of another size (before rendering: no output)" "--ref: " --ref "$work/small.exr"
+# An OBJ naming a FIFO as its mtllib: materials come from the scene, the library is never opened.
+printf 'mtllib pipe.mtl\nv -1 -1 -3\nv 1 -1 -3\nv 0 1 -3\nf 1 2 3\n' > "$g/mtl-pipe.obj"
+printf '{"meshes": [{"obj": "mtl-pipe.obj"}]}' > "$g/mtl-pipe.json"
+timeout -s KILL 10 "$pathlab" -q -s 1 -d 16x12 -o "$work/mtl.png" "$g/mtl-pipe.json" 2>"$work/err.txt" && pass ||
+  fail "an OBJ whose mtllib is a FIFO: exit $?, $(cat "$work/err.txt")"
+
+# A read-only folder (as root, whom permissions do not stop, as user nobody
+# through setpriv), and a full disk (a 16 KB tmpfs in a private mount namespace:
+# root's own, or a user namespace's where the kernel allows one).
+mkdir "$work/read-only" && chmod 555 "$work/read-only"
+if [[ $(id -u) -ne 0 ]]; then
+  bad_input "a read-only output folder" "not writable" -o "$work/read-only/out.png"
+elif command -v setpriv >/dev/null && setpriv --reuid=65534 --regid=65534 --clear-groups true 2>/dev/null &&
+     setpriv --reuid=65534 --regid=65534 --clear-groups test -x "$pathlab" 2>/dev/null; then
+  chmod 755 "$work"
+  setpriv --reuid=65534 --regid=65534 --clear-groups "$pathlab" -q -s 1 -d 16x12 -o "$work/read-only/out.png" 2>"$work/err.txt"
+  [[ $? -eq 1 ]] && grep -q "not writable" "$work/err.txt" && pass || fail "a read-only output folder (as nobody): $(cat "$work/err.txt")"
+else
+  echo "skipped: a read-only output folder (running as root, and user nobody cannot run $pathlab)"
+fi
+if [[ $(id -u) -eq 0 ]]; then namespace=(unshare -m); else namespace=(unshare -rm); fi
+if "${namespace[@]}" true 2>/dev/null; then
+  for ext in png jpg exr hdr; do
+    mkdir -p "$work/full"
+    "${namespace[@]}" bash -c 'mount -t tmpfs -o size=16k none "$1" && "$2" -q -s 1 -d 300x200 -o "$1/out.'$ext'"; rc=$?; ls -A "$1" > "$3"; exit $rc' \
+      _ "$work/full" "$pathlab" "$work/left.txt" 2>"$work/err.txt"
+    rc=$?
+    if [[ $rc -eq 1 && $(wc -l < "$work/err.txt") -eq 1 ]] && grep -q "No space left on device" "$work/err.txt" && [[ ! -s $work/left.txt ]]; then
+      pass
+    else
+      fail "a full disk writing .$ext: exit $rc, left [$(cat "$work/left.txt" 2>/dev/null)], $(head -3 "$work/err.txt")"
+    fi
+  done
+else
+  echo "skipped: a full disk (no private mount namespace here: unshare -m needs root or user namespaces)"
+fi
+
+# --- legitimate extremes: a correct image, at most one warning ---------------
+"$pathlab" -q -s 1 -m 1 -d 16x12 -o "$work/sky.exr" "$g/sky-sphere.json" 2>"$work/err.txt" &&
+  out=$("$pathlab" -q -s 1 -m 1 -d 16x12 -o "$work/sky2.exr" "$g/sky-sphere.json" --ref "$g/sky-expected.pfm" 2>&1) &&
+  [[ $out =~ RMSE\ ([0-9.e+-]+), ]] && awk -v e="${BASH_REMATCH[1]}" 'BEGIN { exit !(e < 1e-4) }' && pass ||
+  fail "a sphere of radius 1e9 around the camera, lit from its centre, is not 0.5/pi everywhere: $out $(cat "$work/err.txt")"
+"$pathlab" -q -s 1 -d 16x12 -o "$work/texels.exr" "$g/bad-texels.json" 2>"$work/err.txt"
+rc=$?
+[[ $rc -eq 0 && $(wc -l < "$work/err.txt") -eq 1 ]] && grep -q "12 texels are NaN, infinite or negative" "$work/err.txt" && pass ||
+  fail "an environment map with NaN, infinite and negative texels: exit $rc, $(cat "$work/err.txt")"
+timeout -s KILL 10 "$pathlab" -q -s 1 -d 16x12 -o "$work/disc.png" "$g/huge-convex-polygon.json" 2>"$work/err.txt" && pass ||
+  fail "a convex polygon of 150,000 vertices: exit $?, $(cat "$work/err.txt")"
+"$pathlab" -q -s 1 -d 1x1 -o "$work/one.png" 2>"$work/err.txt" && [[ -s $work/one.png ]] && pass || fail "a 1x1 image: $(cat "$work/err.txt")"
 
 echo "$passed passed, $failed failed"
 [[ $failed -eq 0 ]]

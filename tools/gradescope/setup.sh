@@ -9,7 +9,7 @@
 set -euo pipefail
 autograder=${AUTOGRADER_ROOT:-/autograder}
 packages=(build-essential cmake ninja-build pkg-config python3
-  libglm-dev libopenimageio-dev doctest-dev nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libpugixml-dev
+  libglm-dev libopenimageio-dev doctest-dev nlohmann-json3-dev libcli11-dev libpugixml-dev
   bubblewrap util-linux)
 if [ "${PATHLAB_SKIP_APT:-}" = 1 ]; then
   missing=$(dpkg-query -W -f='${db:Status-Abbrev} ${Package}\n' "${packages[@]}" 2>&1 | grep -v '^ii ' || true)

@@ -90,6 +90,26 @@ struct Scene {
   size_t triangleCount() const;
 };
 
+// ---- Limits every loader checks (docs/reliability.md, "Limits") ----------
+
+// Geometry and camera within +-1e12 of the origin: float32 maths squares
+// distances (a sphere test forms r^2 and |o - c|^2), so coordinates near
+// 1e19 overflow to infinity and a BVH's bounds become NaN. 1e12 leaves the
+// squares (1e24), their sums and the tree's surface areas far from float's
+// 3.4e38, and still spans a sky dome a million times a scene of 1e6 units.
+constexpr float kMaxSceneCoordinate = 1e12f;
+constexpr int kMaxImageSide = 16384;
+constexpr int64_t kMaxImagePixels = int64_t(1) << 26;  // 67 M pixels, 800 MB of float RGB
+
+// Throws pathlab::Error "WHERE: ..." unless 1 <= side <= kMaxImageSide and
+// the image has at most kMaxImagePixels.
+void checkResolution(int64_t width, int64_t height, const std::string& where);
+
+// Throws pathlab::Error naming the scene file and the object when a mesh
+// vertex, a sphere's extent or the camera lies outside kMaxSceneCoordinate
+// (or is not finite), or the camera has no usable direction.
+void checkSceneLimits(const Scene& scene);
+
 // Applies a transform to a mesh's positions and normals; a mirroring
 // transform also flips the winding, so front faces stay in front.
 void transformMesh(TriangleMesh& mesh, const glm::mat4& worldFromObject);
