@@ -2,6 +2,7 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <new>
 
 #include <unistd.h>
 
@@ -33,6 +34,9 @@ int main(int argc, char** argv) {
   std::signal(SIGTERM, onInterrupt);
   try {
     return pathlab::runCli(argc, argv, gCancel, gRendering);
+  } catch (const std::bad_alloc&) {
+    pathlab::printError("pathlab", "out of memory: the scene or image is too large for this machine");
+    return 1;
   } catch (const std::exception& e) {
     pathlab::printError("pathlab", std::string("internal error: ") + e.what());
     return 2;

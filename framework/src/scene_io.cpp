@@ -325,6 +325,10 @@ TriangleMesh bumpySphereMesh(const Object& o) {
   Object b(o.source(), o.at("bumpy_sphere"), o.field("bumpy_sphere"), {"rings", "segments"});
   const int rings = int(b.integer("rings", 64, 2, 4096));
   const int segments = int(b.integer("segments", 128, 3, 4096));
+  if (int64_t(rings) * segments > (int64_t(1) << 22)) {  // 8 M triangles, about 400 MB
+    b.fail(b.field("rings"), std::to_string(rings) + " rings of " + std::to_string(segments) +
+                                 " segments is more than 4,194,304 quads");
+  }
   return bumpySphere(rings, segments);
 }
 
