@@ -45,7 +45,8 @@ std::vector<Vec2> uniformPoints(int n, uint64_t seed) {
 }
 
 // Chi-square of sampleEnvironment against environmentPdf over the sphere.
-ChiSquareResult chiSquare(const EnvironmentDistribution& d, int samples, uint64_t seed, int* failed) {
+ChiSquareResult chiSquare(const std::string& name, const EnvironmentDistribution& d, int samples, uint64_t seed,
+                          int* failed) {
   DirectionHistogram histogram;
   *failed = 0;
   for (const auto& s : candidate::sampleEnvironment(d, uniformPoints(samples, seed))) {
@@ -62,7 +63,8 @@ ChiSquareResult chiSquare(const EnvironmentDistribution& d, int samples, uint64_
     const std::vector<float> p = candidate::environmentPdf(d, swapped);
     return std::vector<double>(p.begin(), p.end());
   };
-  return chiSquareTest(histogram.counts, DirectionHistogram::expected(pdfs, samples - *failed, 32));
+  // (The pictures' poles are the map's: +y up.)
+  return chiSquareOfDirections(name, histogram, DirectionHistogram::expected(pdfs, samples - *failed, 32), 1e-4);
 }
 
 // Integral of environmentPdf over the sphere (midpoint rule, fine grid).
@@ -139,8 +141,9 @@ TEST_CASE("T7.3 uniform sphere: directions cover the sphere evenly (chi-square, 
   for (const Vec3& w : candidate::sampleUniformSphere(uniformPoints(kSamples, 72))) histogram.add(w);
   CHECK(histogram.outside == 0);
   auto pdf = [](const std::vector<Vec3>& ws) { return std::vector<double>(ws.size(), 1.0 / (4.0 * M_PI)); };
-  ChiSquareResult r = chiSquareTest(histogram.counts, DirectionHistogram::expected(pdf, kSamples));
-  INFO("chi-square " << r.statistic << ", dof " << r.degreesOfFreedom << ", p = " << r.pValue << " " << r.failure);
+  ChiSquareResult r = chiSquareOfDirections("T7.3-uniform-sphere", histogram, DirectionHistogram::expected(pdf, kSamples), 1e-4);
+  INFO("chi-square " << r.statistic << ", dof " << r.degreesOfFreedom << ", p = " << r.pValue << " " << r.failure
+                     << "\n" << r.pictures);
   CHECK(r.failure.empty());
   CHECK(r.pValue > 1e-4);
 }
@@ -187,10 +190,12 @@ TEST_CASE("T7.5 importance sampling: samples follow the pdf on Mitsuba's maps (o
   for (const Image& m : {single, constantMap(100, 100), constantMap(3, 2), noisy}) {
     EnvironmentDistribution d = candidate::buildEnvironmentDistribution(m);
     int failed = 0;
-    ChiSquareResult r = chiSquare(d, 500000, 74 + uint64_t(m.width), &failed);
+    const std::string name = "T7.5-map-" + std::to_string(m.width) + "x" + std::to_string(m.height);
+    ChiSquareResult r = chiSquare(name, d, 500000, 74 + uint64_t(m.width), &failed);
     CAPTURE(m.width);
     CAPTURE(m.height);
-    INFO("chi-square " << r.statistic << ", dof " << r.degreesOfFreedom << ", p = " << r.pValue << " " << r.failure);
+    INFO("chi-square " << r.statistic << ", dof " << r.degreesOfFreedom << ", p = " << r.pValue << " " << r.failure
+                       << "\n" << r.pictures);
     CHECK(failed < 10);
     CHECK(r.failure.empty());
     CHECK(r.pValue > 1e-4);

@@ -12,6 +12,7 @@
 
 #include "../remote/image_calls.h"
 #include "check.h"
+#include "failure_pictures.h"
 #include "pathlab/error.h"
 #include "pathlab/image.h"
 
@@ -128,13 +129,6 @@ Image varianceImage(const PixelMoments& m) {
 }
 
 // Nearest-neighbour enlargement: the test images are small.
-Image enlarged(const Image& image, int factor) {
-  Image out(image.width * factor, image.height * factor);
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x) out.at(x, y) = image.at(x / factor, y / factor);
-  return out;
-}
-
 // Both images with one exposure: the reference's 90th percentile maps to 0.8
 // (lights and the sun saturate, the rest stays readable).
 float exposureOf(const Image& reference) {
@@ -162,11 +156,7 @@ Image zScoreMap(const Verdict& v, int width, int height) {
 
 std::string writeFailureImages(const ImageCase& c, const PixelMoments& yours, const PixelMoments& reference,
                                const Verdict& v) {
-  const char* dirVariable = std::getenv("PATHLAB_IMAGE_FAILURES_DIR");
-  const std::filesystem::path dir = dirVariable && *dirVariable ? dirVariable : "image-failures";
-  std::error_code error;
-  std::filesystem::create_directories(dir, error);
-  const std::string stem = (dir / (c.suite + "-" + c.name)).string();
+  const std::string stem = (std::filesystem::path(failurePicturesDir()) / (c.suite + "-" + c.name)).string();
   const Image referenceImage = meanImage(reference);
   const float exposure = exposureOf(referenceImage);
   auto exposed = [&](Image image) {
@@ -241,7 +231,7 @@ void checkImage(ImageCase c) {
       std::fclose(f);
     }
   }
-  if (const char* always = std::getenv("PATHLAB_IMAGE_PICTURES"); always && std::string(always) == "always") {
+  if (picturesAlways()) {
     MESSAGE(writeFailureImages(c, yours, reference, v));
   }
   if (yours.nonFinite > 0 || !v.pass()) {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "failure_pictures.h"
 #include "pathlab/math.h"
 
 namespace pathlab::test {
@@ -83,6 +84,7 @@ struct ChiSquareResult {
   int degreesOfFreedom = 0;
   double pValue = 0.0;
   std::string failure;  // a hard failure before any statistics, or ""
+  std::string pictures;  // where it failed, drawn (chiSquareOfDirections), or ""
 };
 
 // Pearson's test of observed counts against expected counts. Cells with an
@@ -186,5 +188,19 @@ struct DirectionHistogram {
     return result;
   }
 };
+
+// The chi-square test of a direction histogram against the expected counts;
+// when it fails (a hard failure, or p <= pLimit) or PATHLAB_IMAGE_PICTURES is
+// "always", `pictures` names pictures of the (phi, cos theta) map: observed,
+// expected and their difference (failure_pictures.h), saved as NAME-*.
+inline ChiSquareResult chiSquareOfDirections(const std::string& name, const DirectionHistogram& histogram,
+                                             const std::vector<double>& expected, double pLimit) {
+  ChiSquareResult r = chiSquareTest(histogram.counts, expected);
+  if (!r.failure.empty() || !(r.pValue > pLimit) || picturesAlways()) {
+    r.pictures = writeHistogramPictures(name, histogram.counts, expected, DirectionHistogram::kPhi,
+                                        DirectionHistogram::kCos, "phi cell", "cos-theta cell");
+  }
+  return r;
+}
 
 }  // namespace pathlab::test
