@@ -5,14 +5,34 @@
 # framework (a static library that calls the task functions) resolves against
 # whichever implementation the executable chose, in any link order.
 
-set(PATHLAB_TASK_DIRS
-  01-camera-rays/camera_rays.cpp
-  02-intersection/intersection.cpp
-  03-bvh/bvh.cpp
-  04-direct-lighting/direct_lighting.cpp
-  05-path-tracing/path_tracing.cpp
-  06-mirror-glass/mirror_glass.cpp
-  07-environment/environment.cpp)
+#
+# The task list is the folders tasks/NN-name/, numbered from 01: the suites,
+# the validity matrix, the debuggers, the seed runs and the grader all derive
+# from them (tools read them through tools/pathlab_tasks.py). Task NN's
+# student file is tasks/NN-name/name.cpp, the name's dashes as underscores.
+#   PATHLAB_TASK_NAMES   01-camera-rays;02-intersection;...
+#   PATHLAB_TASK_DIRS    01-camera-rays/camera_rays.cpp;...
+#   PATHLAB_TASK_COUNT   7
+file(GLOB _pathlab_task_folders LIST_DIRECTORIES true RELATIVE ${CMAKE_SOURCE_DIR}/tasks
+     CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/tasks/[0-9][0-9]-*)
+list(SORT _pathlab_task_folders)
+set(PATHLAB_TASK_NAMES "")
+set(PATHLAB_TASK_DIRS "")
+foreach(folder IN LISTS _pathlab_task_folders)
+  if(IS_DIRECTORY ${CMAKE_SOURCE_DIR}/tasks/${folder})
+    list(LENGTH PATHLAB_TASK_NAMES count)
+    math(EXPR expected "${count} + 1")
+    string(SUBSTRING ${folder} 0 2 number)
+    if(NOT number EQUAL expected)
+      message(FATAL_ERROR "tasks/${folder}: expected task ${expected} here (tasks/NN-name/ from 01, no gaps)")
+    endif()
+    string(REGEX REPLACE "^[0-9][0-9]-" "" stem ${folder})
+    string(REPLACE "-" "_" stem ${stem})
+    list(APPEND PATHLAB_TASK_NAMES ${folder})
+    list(APPEND PATHLAB_TASK_DIRS ${folder}/${stem}.cpp)
+  endif()
+endforeach()
+list(LENGTH PATHLAB_TASK_NAMES PATHLAB_TASK_COUNT)
 
 # Where the student files come from: tasks/ by default; a TA grading a
 # submission points PATHLAB_STUDENT_DIR at it (files either as the
@@ -59,7 +79,7 @@ function(pathlab_link_tasks)
   if(NOT ARG_VARIANT)
     set(ARG_VARIANT selected)
   endif()
-  foreach(n RANGE 1 7)
+  foreach(n RANGE 1 ${PATHLAB_TASK_COUNT})
     set(v ${ARG_VARIANT})
     if(ARG_TASK AND n EQUAL ARG_TASK)
       set(v ${ARG_TASK_VARIANT})
@@ -95,7 +115,7 @@ function(pathlab_task_summary out)
     set(ARG_VARIANT selected)
   endif()
   set(s "")
-  foreach(n RANGE 1 7)
+  foreach(n RANGE 1 ${PATHLAB_TASK_COUNT})
     pathlab_task_variant(${n} ${ARG_VARIANT} v)
     string(APPEND s "${n}:${v} ")
   endforeach()

@@ -6,14 +6,14 @@ a correct but different solution and must score full points (CTest label
 "validity"; docs/grader-validity.md lists what caught each mutant).
 
 Run after changing a reference file: tests/mutants/generate.py"""
+import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-FILES = {
-    1: "01-camera-rays/camera_rays.cpp", 2: "02-intersection/intersection.cpp", 3: "03-bvh/bvh.cpp",
-    4: "04-direct-lighting/direct_lighting.cpp", 5: "05-path-tracing/path_tracing.cpp",
-    6: "06-mirror-glass/mirror_glass.cpp", 7: "07-environment/environment.cpp",
-}
+sys.path.insert(0, str(ROOT / "tools"))
+import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
+
+FILES = {n: f"{folder}/{file}" for n, (folder, file) in pathlab_tasks.tasks(ROOT).items()}
 
 # (task, name, description, [(old, new), ...])
 MUTANTS = [

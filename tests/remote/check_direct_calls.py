@@ -10,9 +10,10 @@ import re
 import sys
 from pathlib import Path
 
-SUITES = {"01-camera-rays": "camera_rays.h", "02-intersection": "intersection.h", "03-bvh": "bvh.h",
-          "04-direct-lighting": "direct_lighting.h", "05-path-tracing": "path_tracing.h",
-          "06-mirror-glass": "mirror_glass.h", "07-environment": "environment.h"}
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
+import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
+
+SUITES = {folder: file.replace(".cpp", ".h") for folder, file in pathlab_tasks.tasks().values()}
 
 
 def code_only(text: str) -> str:

@@ -3,9 +3,14 @@
 # Which student files the build compiled (cmake/PathLabTasks.cmake's lookup:
 # PATHLAB_STUDENT_DIR as the tasks/ tree or flat, else tasks/), and which of
 # them are undone: a PATHLAB_TODO call left outside comments.
-task_paths=(01-camera-rays/camera_rays.cpp 02-intersection/intersection.cpp 03-bvh/bvh.cpp
-            04-direct-lighting/direct_lighting.cpp 05-path-tracing/path_tracing.cpp
-            06-mirror-glass/mirror_glass.cpp 07-environment/environment.cpp)
+# The task list is the folders tasks/NN-name/ (cmake/PathLabTasks.cmake);
+# task NN's file is NN-name/name.cpp, the name's dashes as underscores.
+task_paths=()
+for folder in "$root"/tasks/[0-9][0-9]-*/; do
+  folder=$(basename "$folder") stem=${folder#[0-9][0-9]-}
+  task_paths+=("$folder/${stem//-/_}.cpp")
+done
+task_count=${#task_paths[@]}
 student_dir=$(sed -n 's/^PATHLAB_STUDENT_DIR:PATH=//p' "$build/CMakeCache.txt" 2>/dev/null)
 student_dir=${student_dir:-$root/tasks}
 task_file() {  # task_file N

@@ -1,0 +1,21 @@
+"""The task list, as every tool reads it: the folders tasks/NN-name/ (CMake
+reads the same folders, cmake/PathLabTasks.cmake). Task NN's student file is
+tasks/NN-name/name.cpp with the name's dashes as underscores; its API header
+framework/include/pathlab/tasks/name.h; its reference solutions/NN-name/name.cpp;
+its suite tests/NN-name/."""
+import re
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def tasks(root: Path = ROOT) -> dict:
+    """{number: (folder, file name)}, e.g. {1: ("01-camera-rays", "camera_rays.cpp"), ...}."""
+    found = {}
+    for folder in sorted((root / "tasks").iterdir()):
+        match = re.fullmatch(r"(\d\d)-([a-z0-9-]+)", folder.name)
+        if match and folder.is_dir():
+            found[int(match.group(1))] = (folder.name, match.group(2).replace("-", "_") + ".cpp")
+    if sorted(found) != list(range(1, len(found) + 1)):
+        raise SystemExit(f"pathlab_tasks: tasks/ folders are not numbered 01 to {len(found):02d}: {sorted(found)}")
+    return found
