@@ -7,18 +7,12 @@
 
 #include <optional>
 
+#include "pathlab/bsdf_sample.h"
 #include "pathlab/frame.h"
 #include "pathlab/hit.h"
 #include "pathlab/scene.h"
 
 namespace pathlab {
-
-struct BsdfSample {
-  Vec3 wi{0.0f};       // unit
-  Color f{0.0f};       // BSDF value f(wo, wi); for a delta lobe the whole weight f cos / pdf
-  float pdf = 0.0f;    // solid-angle density; for a delta lobe the probability of the lobe chosen
-  bool isDelta = false;
-};
 
 class Bsdf {
  public:

@@ -7,7 +7,7 @@
 
 #include <optional>
 
-#include "pathlab/bsdf.h"
+#include "pathlab/bsdf_sample.h"
 #include "pathlab/math.h"
 
 namespace pathlab {
