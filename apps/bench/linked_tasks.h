@@ -4,9 +4,9 @@
 // task (PATHLAB_TASKS, PATHLAB_TASKn: cmake/PathLabTasks.cmake) and records
 // the choice as PATHLAB_TASK_SUMMARY ("1:reference 2:student ..."), the
 // string `pathlab --version` prints. A binary compiled without it still knows
-// one case for sure: a task with no solutions/ file (a student release) can
-// only be the student's; anything else is reported as "unknown", never
-// guessed.
+// one case for sure: a task with no solutions/ file when the build was
+// configured (a student release; pathlab/task_list.h) can only be the
+// student's; anything else is reported as "unknown", never guessed.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -16,6 +16,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "pathlab/task_list.h"
 
 namespace pathlab::bench {
 
@@ -31,62 +33,17 @@ inline const char* codeName(Code code) {
 }
 
 struct LinkedTasks {
-  std::array<Code, 8> code{};  // code[1] .. code[7]
+  std::array<Code, kTaskCount + 1> code{};  // code[1] .. code[kTaskCount]
   bool recorded = false;       // from the build's PATHLAB_TASK_SUMMARY
 
   Code operator[](int task) const { return code[size_t(task)]; }
 };
 
-namespace detail {
-
-// Which solutions/ files existed when this was compiled (the same test
-// pathlab_task_variant() makes: without one, a task falls back to the student's).
-inline constexpr std::array<bool, 8> kHaveSolution = {
-    false,
-#if __has_include("../../solutions/01-camera-rays/camera_rays.cpp")
-    true,
-#else
-    false,
-#endif
-#if __has_include("../../solutions/02-intersection/intersection.cpp")
-    true,
-#else
-    false,
-#endif
-#if __has_include("../../solutions/03-bvh/bvh.cpp")
-    true,
-#else
-    false,
-#endif
-#if __has_include("../../solutions/04-direct-lighting/direct_lighting.cpp")
-    true,
-#else
-    false,
-#endif
-#if __has_include("../../solutions/05-path-tracing/path_tracing.cpp")
-    true,
-#else
-    false,
-#endif
-#if __has_include("../../solutions/06-mirror-glass/mirror_glass.cpp")
-    true,
-#else
-    false,
-#endif
-#if __has_include("../../solutions/07-environment/environment.cpp")
-    true,
-#else
-    false,
-#endif
-};
-
-}  // namespace detail
-
 // `summary`: "1:reference 2:student ..." as CMake writes it; nullptr when
 // the binary was compiled without it.
 inline LinkedTasks parseTaskSummary(const char* summary) {
   LinkedTasks tasks;
-  for (int n = 1; n <= 7; ++n) tasks.code[size_t(n)] = detail::kHaveSolution[size_t(n)] ? Code::Unknown : Code::Yours;
+  for (int n = 1; n <= kTaskCount; ++n) tasks.code[size_t(n)] = kTaskHasSolution[n] ? Code::Unknown : Code::Yours;
   if (!summary) return tasks;
   std::istringstream in(summary);
   for (std::string entry; in >> entry;) {
@@ -94,7 +51,7 @@ inline LinkedTasks parseTaskSummary(const char* summary) {
     if (colon == std::string::npos) continue;
     const int n = std::atoi(entry.c_str());
     const std::string variant = entry.substr(colon + 1);
-    if (n < 1 || n > 7) continue;
+    if (n < 1 || n > kTaskCount) continue;
     if (variant == "student") tasks.code[size_t(n)] = Code::Yours;
     else if (variant == "reference") tasks.code[size_t(n)] = Code::Reference;
     else continue;
@@ -137,9 +94,15 @@ inline std::string describeTasks(const LinkedTasks& tasks, const std::vector<int
 }
 
 // Every task, and why some are "unknown" when they are.
+inline std::vector<int> allTaskNumbers() {
+  std::vector<int> all;
+  for (int n = 1; n <= kTaskCount; ++n) all.push_back(n);
+  return all;
+}
+
 inline std::string describeAllTasks(const LinkedTasks& tasks) {
-  std::string out = describeTasks(tasks, {1, 2, 3, 4, 5, 6, 7});
-  for (int n = 1; n <= 7; ++n) {
+  std::string out = describeTasks(tasks, allTaskNumbers());
+  for (int n = 1; n <= kTaskCount; ++n) {
     if (tasks[n] != Code::Unknown) continue;
     return out + " (this pathlab-bench was compiled without PATHLAB_TASK_SUMMARY, the record of whose code it links)";
   }
@@ -153,6 +116,6 @@ inline nlohmann::json tasksJson(const LinkedTasks& tasks, const std::vector<int>
   return json;
 }
 
-inline nlohmann::json allTasksJson(const LinkedTasks& tasks) { return tasksJson(tasks, {1, 2, 3, 4, 5, 6, 7}); }
+inline nlohmann::json allTasksJson(const LinkedTasks& tasks) { return tasksJson(tasks, allTaskNumbers()); }
 
 }  // namespace pathlab::bench

@@ -8,6 +8,7 @@
 #include "pathlab/camera.h"
 #include "pathlab/error.h"
 #include "pathlab/progress.h"
+#include "pathlab/task_list.h"
 #include "pathlab/todo.h"
 
 namespace pathlab::gui {
@@ -20,14 +21,8 @@ constexpr const char* kTaskTitles[] = {"", "Camera rays", "Intersection", "BVH",
                                        "Path tracing", "Mirror & glass", "Environment"};
 constexpr const char* kTabNames[] = {"", "1 Camera", "2 Hits", "3 BVH", "4 Direct", "5 Paths", "6 Mirror/glass",
                                      "7 Environment"};
-constexpr const char* kTaskFiles[] = {"",
-                                      "tasks/01-camera-rays/camera_rays.cpp",
-                                      "tasks/02-intersection/intersection.cpp",
-                                      "tasks/03-bvh/bvh.cpp",
-                                      "tasks/04-direct-lighting/direct_lighting.cpp",
-                                      "tasks/05-path-tracing/path_tracing.cpp",
-                                      "tasks/06-mirror-glass/mirror_glass.cpp",
-                                      "tasks/07-environment/environment.cpp"};
+static_assert(std::size(kTaskTitles) == kTaskCount + 1 && std::size(kTabNames) == kTaskCount + 1,
+              "a title and a tab name for every task folder (pathlab/task_list.h)");
 constexpr int kInspectedSamples = 16;
 const ImVec4 kWarning(1.0f, 0.45f, 0.35f, 1.0f), kGood(0.5f, 0.9f, 0.5f, 1.0f), kDim(0.65f, 0.65f, 0.65f, 1.0f);
 
