@@ -108,7 +108,9 @@ err=$("$pathlab" debug --task 2 --view nope 2>&1 >/dev/null)
 [[ $? -eq 1 ]] && grep -q "views: normals" <<< "$err" && pass || fail "unknown view: $err"
 
 # --- bad input: one line on stderr naming the problem, exit code 1 --------
-# Every case within 10 s and, without sanitizers, 1 GB of address space
+# Every case within 10 s of CPU time (prlimit --cpu: a busy CI machine does
+# not make it flaky) and 60 s of wall time (a hang that uses no CPU, like a
+# blocked read), and, without sanitizers, 1 GB of address space
 # (PATHLAB_CATALOG_MEMORY_LIMIT, bytes; set by CTest). Inputs named
 # generated/NAME are written at test time by tests/inputs/generate.py.
 cd "$work" || exit 1
@@ -116,18 +118,20 @@ mkdir a-folder
 python3 "$inputs/generate.py" "$work/generated" || fail "tests/inputs/generate.py"
 limit=()
 if [[ -n ${PATHLAB_CATALOG_MEMORY_LIMIT:-} ]]; then
-  limit=(prlimit --as="$PATHLAB_CATALOG_MEMORY_LIMIT")
+  limit=(--as="$PATHLAB_CATALOG_MEMORY_LIMIT")
   export MALLOC_ARENA_MAX=2  # glibc reserves 64 MB of address space per thread's arena otherwise
 fi
 # bad_input NAME EXPECTED_FRAGMENT ARGS...: exit 1, one stderr line holding the fragment, in time.
 bad_input() {
   local name=$1 fragment=$2 rc lines
   shift 2
-  timeout -s KILL 10 "${limit[@]}" "$pathlab" -q -s 1 -d 16x12 -o "$work/bad.png" "$@" >/dev/null 2>"$work/err.txt"
+  timeout -s KILL 60 prlimit --cpu=10:11 "${limit[@]}" "$pathlab" -q -s 1 -d 16x12 -o "$work/bad.png" "$@" >/dev/null 2>"$work/err.txt"
   rc=$?
   lines=$(wc -l < "$work/err.txt")
   if [[ $rc -eq 137 ]]; then
-    fail "$name: still running after 10 s (killed)"
+    fail "$name: killed after 60 s of wall time (a hang) or 11 s of CPU"
+  elif [[ $rc -eq 152 ]]; then
+    fail "$name: more than 10 s of CPU time (killed)"
   elif [[ $rc -ne 1 ]]; then
     fail "$name: exit code $rc, expected 1: $(head -3 "$work/err.txt")"
   elif [[ $lines -ne 1 ]]; then
@@ -188,7 +192,7 @@ bad_input "--ref of another size (before rendering: no output)" "--ref: " --ref 
 # An OBJ naming a FIFO as its mtllib: materials come from the scene, the library is never opened.
 printf 'mtllib pipe.mtl\nv -1 -1 -3\nv 1 -1 -3\nv 0 1 -3\nf 1 2 3\n' > "$g/mtl-pipe.obj"
 printf '{"meshes": [{"obj": "mtl-pipe.obj"}]}' > "$g/mtl-pipe.json"
-timeout -s KILL 10 "$pathlab" -q -s 1 -d 16x12 -o "$work/mtl.png" "$g/mtl-pipe.json" 2>"$work/err.txt" && pass ||
+timeout -s KILL 60 prlimit --cpu=10:11 "$pathlab" -q -s 1 -d 16x12 -o "$work/mtl.png" "$g/mtl-pipe.json" 2>"$work/err.txt" && pass ||
   fail "an OBJ whose mtllib is a FIFO: exit $?, $(cat "$work/err.txt")"
 
 # A read-only folder (as root, whom permissions do not stop, as user nobody
@@ -244,7 +248,7 @@ rc=$?
 grep -vE '^task [0-9]+( not implemented:|: )' "$work/err.txt" > "$work/errors.txt"  # what undone tasks print
 [[ $rc -eq 0 && $(wc -l < "$work/errors.txt") -eq 1 ]] && grep -q "12 texels are NaN, infinite or negative" "$work/errors.txt" && pass ||
   fail "an environment map with NaN, infinite and negative texels: exit $rc, $(cat "$work/err.txt")"
-timeout -s KILL 10 "$pathlab" -q -s 1 -d 16x12 -o "$work/disc.png" "$g/huge-convex-polygon.json" 2>"$work/err.txt" && pass ||
+timeout -s KILL 60 prlimit --cpu=10:11 "$pathlab" -q -s 1 -d 16x12 -o "$work/disc.png" "$g/huge-convex-polygon.json" 2>"$work/err.txt" && pass ||
   fail "a convex polygon of 150,000 vertices: exit $?, $(cat "$work/err.txt")"
 "$pathlab" -q -s 1 -d 1x1 -o "$work/one.png" 2>"$work/err.txt" && [[ -s $work/one.png ]] && pass || fail "a 1x1 image: $(cat "$work/err.txt")"
 
