@@ -14,6 +14,7 @@
 
 #include "pathlab/accelerator.h"
 #include "pathlab/error.h"
+#include "pathlab/fast_traversal.h"
 #include "pathlab/parallel.h"
 #include "pathlab/procedural.h"
 #include "pathlab/random.h"
@@ -153,6 +154,8 @@ struct SetResult {
   std::optional<double> embree1, embreeN;
   std::optional<size_t> mismatches;  // rays where task 3 is wrong
   size_t embreeMisses = 0;           // true hits that Embree missed
+  double fast1 = 0.0, fastN = 0.0;   // the framework's render path (--accel fast) over the same tree
+  size_t fastMismatches = 0;         // rays where it differs from task 3 at all (primitive, t, or blocked)
 };
 
 // Does the ray hit triangle `primitive` at about distance t, by a
@@ -226,6 +229,22 @@ int runBvhBench(const BvhBenchOptions& options) {
     };
     result.task1 = mraysPerSecond(set.rays.size(), 1, withTask);
     result.taskN = mraysPerSecond(set.rays.size(), threads, withTask);
+    std::vector<std::optional<PrimitiveHit>> fastHits(set.rays.size());
+    std::vector<uint8_t> fastBlocked(set.rays.size());
+    auto withFast = [&](size_t i) {
+      if (set.occlusion) fastBlocked[i] = fastIntersectAny(bvh, geometry, set.rays[i], set.ranges[i]);
+      else fastHits[i] = fastIntersectClosest(bvh, geometry, set.rays[i], set.ranges[i]);
+    };
+    result.fast1 = mraysPerSecond(set.rays.size(), 1, withFast);
+    result.fastN = mraysPerSecond(set.rays.size(), threads, withFast);
+    for (size_t i = 0; i < set.rays.size(); ++i) {
+      if (set.occlusion) {
+        result.fastMismatches += blocked[i] != fastBlocked[i];
+      } else {
+        const auto &a = hits[i], &b = fastHits[i];
+        result.fastMismatches += a.has_value() != b.has_value() || (a && (a->primitive != b->primitive || a->t != b->t));
+      }
+    }
 #ifdef PATHLAB_HAVE_EMBREE
     std::vector<std::optional<PrimitiveHit>> embreeHits(set.rays.size());
     std::vector<uint8_t> embreeBlocked(set.rays.size());
@@ -295,6 +314,20 @@ int runBvhBench(const BvhBenchOptions& options) {
                           {"embree_misses", r.embreeMisses},
                           {"task3_mrays_threads", r.taskN},
                           {"embree_mrays_threads", r.embreeN ? Json(*r.embreeN) : Json(nullptr)}};
+  }
+  // The framework's render path walks task 3's tree; its hits must be task 3's, exactly.
+  std::printf("fast path (--accel fast: the framework's SIMD walk of the same tree)\n");
+  for (size_t s = 0; s < sets.size(); ++s) {
+    const SetResult& r = results[s];
+    std::optional<double> ratio1, ratioN;
+    if (r.embree1) ratio1 = r.fast1 / *r.embree1, ratioN = r.fastN / *r.embreeN;
+    std::printf("%-8s %8zu %8s | %s %s %s | %s %s %s | %zu vs task 3\n", sets[s].name, sets[s].rays.size(), "Mrays/s",
+                cell(r.fast1).c_str(), cell(r.embree1).c_str(), cell(ratio1).c_str(), cell(r.fastN).c_str(),
+                cell(r.embreeN).c_str(), cell(ratioN).c_str(), r.fastMismatches);
+    json[sets[s].name]["fast_mrays"] = r.fast1;
+    json[sets[s].name]["fast_mrays_threads"] = r.fastN;
+    json[sets[s].name]["fast_ratio"] = ratio1 ? Json(*ratio1) : Json(nullptr);
+    json[sets[s].name]["fast_mismatches_vs_task3"] = r.fastMismatches;
   }
   for (size_t s = 0; s < sets.size(); ++s) {
     if (results[s].embreeMisses == 0) continue;

@@ -30,40 +30,40 @@ using Json = nlohmann::json;
 struct Strategy {
   std::string name;
   RenderOptions options;
-  // The tasks whose code must act on the change for it to do anything (the
-  // framework only passes it on); empty for the default strategy.
+  // The tasks whose code the strategy runs besides the default's; empty for
+  // the default strategy.
   std::vector<int> tasks;
-  std::string change;  // the change, as that code sees it
+  std::string change;  // what differs from the default, and whose code does it
+  bool framework = false;  // run by the framework's path tracer (pathlab/strategies.h), not tracePath
 };
 
-// Each strategy changes one thing from the default (the reference's best).
+// Each strategy changes one thing from the default (the course's recipe).
+// The sampling strategies are the framework's path tracer, assembled from
+// the tasks' pieces (BRDF, ray offset, light directions, diffuse sampling,
+// lobes): the student's tracePath follows the recipe only.
 Strategy strategy(const std::string& name) {
-  Strategy s{name, {}, {}, {}};
+  Strategy s{name, {}, {}, {}, false};
+  auto frameworkStrategy = [&](SamplingStrategy change, const std::string& what) {
+    s.options.strategy = change;
+    s.tasks = {4, 5};
+    s.change = what + " (the framework's path tracer, with task 4 and 5's pieces)";
+    s.framework = true;
+  };
   if (name == "reference" || name == "env-importance" || name == "cosine" || name == "nee" || name == "rr") {
   } else if (name == "env-uniform") {
     s.options.environmentSampling = EnvironmentSampling::Uniform;
     s.tasks = {7};
     s.change = "uniform environment sampling (sampleUniformSphere instead of sampleEnvironment)";
   } else if (name == "uniform-hemisphere") {
-    s.options.cosineSampling = false;
-    s.tasks = {5};
-    s.change = "context.cosineSampling = false";
+    frameworkStrategy({.cosineSampling = false}, "uniform hemisphere sampling of diffuse bounces");
   } else if (name == "no-nee") {
-    s.options.lightSampling = false;
-    s.tasks = {5};
-    s.change = "context.lightSampling = false";
+    frameworkStrategy({.lightSampling = false}, "BSDF sampling only, no next-event estimation");
   } else if (name == "no-rr") {
-    s.options.russianRoulette = false;
-    s.tasks = {5};
-    s.change = "context.russianRoulette = false";
+    frameworkStrategy({.russianRoulette = false}, "no Russian roulette");
   } else if (name == "mis-balance") {
-    s.options.mis = MisHeuristic::Balance;
-    s.tasks = {4, 5};
-    s.change = "context.mis = MisHeuristic::Balance";
+    frameworkStrategy({.mis = MisHeuristic::Balance}, "MIS of light and BSDF samples, balance heuristic");
   } else if (name == "mis-power") {
-    s.options.mis = MisHeuristic::Power;
-    s.tasks = {4, 5};
-    s.change = "context.mis = MisHeuristic::Power";
+    frameworkStrategy({.mis = MisHeuristic::Power}, "MIS of light and BSDF samples, power heuristic");
   } else {
     throw Error("--strategies: unknown strategy \"" + name +
                 "\" (reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, mis-balance, mis-power, env-importance, "
@@ -74,8 +74,9 @@ Strategy strategy(const std::string& name) {
 
 // The probe: a small render of the scene with the strategy's change and
 // without, same seed. Rendering is deterministic (the same image for any
-// thread count), so identical images mean the linked code ignored the change
-// here: running the strategy would time the default under another name.
+// thread count), so identical images mean the change did nothing here (the
+// linked code ignores it, or is unfinished): running the strategy would time
+// the default under another name.
 constexpr int kProbeWidth = 64;
 constexpr int kProbeSpp = 8;
 
@@ -134,7 +135,7 @@ Availability judge(const Strategy& s, const Scene& scene, const LinkedTasks& lin
     (linked[n] == Code::Yours ? yours : linked[n] == Code::Reference ? reference : unknown).push_back(n);
   }
   if (!identicalToDefault) {
-    if (!yours.empty() && !reference.empty()) {
+    if (!s.framework && !yours.empty() && !reference.empty()) {
       a.note = "combines your task " + joinTasks(yours) + " with the reference's task " + joinTasks(reference) +
                ": unbiased only if both apply " + s.change;
     }
@@ -152,15 +153,17 @@ Availability judge(const Strategy& s, const Scene& scene, const LinkedTasks& lin
   if (!sceneCause.empty()) {
     a.reason = "no effect on this scene (" + sceneCause + "; " + probe + ")";
   } else if (!yours.empty()) {
-    a.reason = "your task " + joinTasks(yours) + " ignores " + s.change + " (" + probe;
+    a.reason = (s.framework ? s.change + " changes nothing with your task " + joinTasks(yours)
+                            : "your task " + joinTasks(yours) + " ignores " + s.change) +
+               " (" + probe;
     for (int n : yours) {
       const std::string todos = todosOfTask(n);
       if (!todos.empty()) a.reason += "; your task " + std::to_string(n) + " reached TODO " + todos;
     }
     a.reason += ")";
   } else if (!unknown.empty()) {
-    a.reason = "the linked task " + joinTasks(unknown) + " (whose code this binary does not record) ignores " +
-               s.change + " (" + probe + ")";
+    a.reason = "with the linked task " + joinTasks(unknown) + " (whose code this binary does not record), " +
+               s.change + " changes nothing (" + probe + ")";
   } else {
     a.reason = "no effect on this scene (" + probe + ")";
   }
@@ -229,7 +232,8 @@ int runConvergeBench(const ConvergeOptions& options) {
     const bool same = identical(probeImage(probe, s.options, threads), *probeDefault);
     availability[i] = judge(s, scene, linked, same);
     if (availability[i].available) {
-      std::printf("probe %-18s available: changes the image (%s)\n", s.name.c_str(),
+      std::printf("probe %-18s available: changes the image (%s%s)\n", s.name.c_str(),
+                  s.framework ? "the framework's path tracer with the pieces of " : "",
                   describeTasks(linked, s.tasks).c_str());
       if (!availability[i].note.empty()) std::printf("  note: %s\n", availability[i].note.c_str());
     } else {
@@ -364,7 +368,8 @@ int runConvergeBench(const ConvergeOptions& options) {
     std::sort(last.begin(), last.end());
     if (!last.empty()) efficiency[i] = last[last.size() / 2];
     const std::string who = s.tasks.empty() ? "default strategy: " + describeTasks(linked, {4, 5, 7})
-                                            : describeTasks(linked, s.tasks);
+                            : s.framework     ? "framework tracer, pieces of " + describeTasks(linked, s.tasks)
+                                              : describeTasks(linked, s.tasks);
     std::printf("%-18s %12s  %s\n", s.name.c_str(), brief(efficiency[i], "-").c_str(), who.c_str());
   }
   std::string comparison;
@@ -384,7 +389,11 @@ int runConvergeBench(const ConvergeOptions& options) {
     std::printf("%s\n", comparison.c_str());
   }
   std::string reached;
-  for (const TodoReached& todo : todosReached()) reached += (reached.empty() ? "" : ", ") + todo.tag;
+  std::vector<std::string> tags;  // each TODO once (a tag may mark several sites)
+  for (const TodoReached& todo : todosReached()) {
+    if (std::find(tags.begin(), tags.end(), todo.tag) == tags.end()) tags.push_back(todo.tag);
+  }
+  for (const std::string& tag : tags) reached += (reached.empty() ? "" : ", ") + tag;
   if (!reached.empty()) {
     std::printf("note: the linked code reached TODO %s: unfinished task code renders neutral values there "
                 "(black), so its errors and efficiencies say nothing yet\n", reached.c_str());

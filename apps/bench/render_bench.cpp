@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "linked_tasks.h"
+#include "pathlab/error.h"
 #include "pathlab/parallel.h"
 #include "pathlab/render.h"
 #include "pathlab/scene_io.h"
@@ -22,12 +23,18 @@ int runRenderBench(const RenderBenchOptions& options) {
   RenderOptions render;
   render.threads = options.threads > 0 ? options.threads : defaultThreadCount();
   render.progress = !options.json;
+  render.traversal = defaultTraversal(PATHLAB_TASK_SUMMARY);
+  if (!options.accel.empty()) {
+    const std::optional<Traversal> traversal = traversalFromName(options.accel);
+    if (!traversal) throw Error("--accel: unknown traversal " + inQuotes(options.accel) + " (task3, fast)");
+    render.traversal = *traversal;
+  }
   const RenderResult result = pathlab::render(scene, render);
   const RenderStats& stats = result.stats;
   const double paths = double(stats.samples) / stats.seconds, rays = double(stats.rays) / stats.seconds;
-  std::printf("grading render%s: %dx%d, %d spp, -m %d, %d threads\n", options.quick ? " (quick)" : "",
+  std::printf("grading render%s: %dx%d, %d spp, -m %d, %d threads, %s traversal\n", options.quick ? " (quick)" : "",
               scene.render.width, scene.render.height, scene.render.samplesPerPixel, scene.render.maxDepth,
-              render.threads);
+              render.threads, traversalName(render.traversal));
   // A path runs every task: camera rays, intersection, BVH, direct lighting,
   // path tracing (and task 6's BSDFs, task 7's sky where the scene has them).
   const LinkedTasks linked = linkedTasks();
@@ -40,6 +47,7 @@ int runRenderBench(const RenderBenchOptions& options) {
                            {"spp", scene.render.samplesPerPixel},                    {"width", scene.render.width},
                            {"height", scene.render.height},                          {"max_depth", scene.render.maxDepth},
                            {"threads", render.threads},                              {"quick", options.quick},
+                           {"traversal", traversalName(render.traversal)},
                            {"tasks", allTasksJson(linked)}};
     std::printf("%s\n", json.dump().c_str());
   }

@@ -138,6 +138,7 @@ void App::restartRender() {
   renderOptions.progress = false;
   renderOptions.threads = options_.threads;
   renderOptions.maxPassSpp = 4;  // refresh the window often
+  renderOptions.traversal = defaultTraversal(options_.taskSummary);
   renderWorker_.submit({scene_, renderOptions, ++generation_});
   renderCurrent_ = false;
   if (pixel_ && (pixel_->x >= width_ || pixel_->y >= height_)) pixel_.reset();

@@ -36,6 +36,7 @@ struct RenderArgs {
   std::string seed;  // parsed by parseSeed: CLI11 would wrap "-1" to 2^64 - 1
   std::string reference;
   std::string integrator = "path";
+  std::string accel;  // empty: defaultTraversal
   bool quiet = false;
 };
 
@@ -130,6 +131,12 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   auto integrator = integratorFromName(args.integrator);
   if (!integrator) throw Error("--integrator: unknown integrator " + inQuotes(args.integrator) + " (path, direct, preview, normals)");
   options.integrator = *integrator;
+  options.traversal = defaultTraversal(PATHLAB_TASK_SUMMARY);
+  if (!args.accel.empty()) {
+    auto traversal = traversalFromName(args.accel);
+    if (!traversal) throw Error("--accel: unknown traversal " + inQuotes(args.accel) + " (task3, fast)");
+    options.traversal = *traversal;
+  }
   checkOutputPath(args.output);
   std::optional<Image> reference;  // read and checked before an hour of rendering, not after
   if (!args.reference.empty()) {
@@ -158,9 +165,9 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
     return 130;
   }
   if (!args.quiet) {
-    std::printf("%s: %dx%d, %d spp, %s integrator, tasks %s\n", args.output.c_str(), settings.width,
+    std::printf("%s: %dx%d, %d spp, %s integrator, %s traversal, tasks %s\n", args.output.c_str(), settings.width,
                 settings.height, settings.samplesPerPixel, integratorName(options.integrator),
-                PATHLAB_TASK_SUMMARY);
+                traversalName(options.traversal), PATHLAB_TASK_SUMMARY);
     std::printf("time %.3f s (BVH build %.1f ms), %s samples/s, %s rays/s\n", stats.seconds, stats.buildSeconds * 1e3,
                 formatRate(double(stats.samples) / stats.seconds).c_str(),
                 formatRate(double(stats.rays) / stats.seconds).c_str());
@@ -238,6 +245,9 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel, std::atomic<b
   app.add_option("--seed", render.seed, "Random seed");
   app.add_option("--ref", render.reference, "Reference image: print RMSE and relMSE after the render");
   app.add_option("--integrator", render.integrator, "path (default), direct (task 4 only), preview (eye light, tasks 1-3), normals");
+  app.add_option("--accel", render.accel,
+                 "How rays walk task 3's tree: task3 (your intersectClosest/intersectAny) or fast (the framework's SIMD "
+                 "walk, same hits); default fast where task 3 is the reference");
   app.add_flag("-q,--quiet", render.quiet, "No progress bar or summary");
 
   DebugArgs debug;

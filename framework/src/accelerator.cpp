@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <mutex>
 
+#include "pathlab/fast_traversal.h"
 #include "pathlab/scene_intersect.h"
 
 namespace pathlab {
@@ -112,7 +113,19 @@ std::string formatBvhStatistics(const BvhStatistics& s) {
   return text + "\n";
 }
 
-Accelerator::Accelerator(const Scene& scene) : scene_(scene) {
+std::optional<Traversal> traversalFromName(const std::string& name) {
+  if (name == "task3") return Traversal::Task3;
+  if (name == "fast") return Traversal::Fast;
+  return std::nullopt;
+}
+
+const char* traversalName(Traversal traversal) { return traversal == Traversal::Fast ? "fast" : "task3"; }
+
+Traversal defaultTraversal(const std::string& taskSummary) {
+  return (" " + taskSummary + " ").find(" 3:reference ") != std::string::npos ? Traversal::Fast : Traversal::Task3;
+}
+
+Accelerator::Accelerator(const Scene& scene, Traversal traversal) : scene_(scene), traversal_(traversal) {
   if (scene.primitives.empty()) return;
   const auto start = std::chrono::steady_clock::now();
   std::vector<Aabb> bounds = primitiveBounds(scene);
@@ -134,14 +147,17 @@ Accelerator::Accelerator(const Scene& scene) : scene_(scene) {
 
 std::optional<Hit> Accelerator::intersect(const Ray& ray, Interval range, TraversalStats* stats) const {
   if (!usesBvh_) return intersectBruteForce(scene_, ray, range);
-  std::optional<PrimitiveHit> hit = intersectClosest(bvh_, geometry_, ray, range, stats);
+  std::optional<PrimitiveHit> hit = traversal_ == Traversal::Fast && !stats
+                                         ? fastIntersectClosest(bvh_, geometry_, ray, range)
+                                         : intersectClosest(bvh_, geometry_, ray, range, stats);
   if (!hit || hit->primitive >= scene_.primitives.size()) return std::nullopt;
   return surfaceHit(scene_, ray, *hit);
 }
 
 bool Accelerator::occluded(const Ray& ray, Interval range, TraversalStats* stats) const {
   if (!usesBvh_) return intersectBruteForce(scene_, ray, range).has_value();
-  return intersectAny(bvh_, geometry_, ray, range, stats);
+  return traversal_ == Traversal::Fast && !stats ? fastIntersectAny(bvh_, geometry_, ray, range)
+                                                 : intersectAny(bvh_, geometry_, ray, range, stats);
 }
 
 }  // namespace pathlab

@@ -83,7 +83,7 @@ PixelInspection inspectPixel(const Scene& scene, const Accelerator& accelerator,
   PixelInspection inspection;
   inspection.pixel = pixel;
   const CameraBasis basis = cameraBasis(scene.camera);
-  TraceContext context = makeTraceContext(scene, accelerator, lights, options);
+  TraceContext context(scene, accelerator, lights);
   context.pixel = pixel;
   Color sum(0.0f);
   for (int s = 0; s < samples; ++s) {

@@ -30,11 +30,14 @@ const char* integratorName(Integrator integrator) {
   return "?";
 }
 
-Color traceRadiance(TraceContext& context, Integrator integrator, const Ray& ray, Sampler& sampler) {
-  if (integrator == Integrator::Path) return tracePath(context, ray, sampler);
+Color traceRadiance(TraceContext& context, const RenderOptions& options, const Ray& ray, Sampler& sampler) {
+  if (options.integrator == Integrator::Path) {
+    return options.strategy.isRecipe() ? tracePath(context, ray, sampler)
+                                       : traceWithStrategy(context, ray, sampler, options.strategy);
+  }
   const Scene& scene = context.scene;
   std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
-  switch (integrator) {
+  switch (options.integrator) {
     case Integrator::Path: break;
     case Integrator::Direct: {
       if (!hit) return context.background(ray.direction);
@@ -57,18 +60,6 @@ Color traceRadiance(TraceContext& context, Integrator integrator, const Ray& ray
   return Color(0.0f);
 }
 
-TraceContext makeTraceContext(const Scene& scene, const Accelerator& accelerator, const Lights& lights,
-                              const RenderOptions& options) {
-  TraceContext context(scene, accelerator, lights);
-  context.lightSamples = scene.render.lightSamples;
-  context.maxDepth = scene.render.maxDepth;
-  context.russianRoulette = options.russianRoulette;
-  context.lightSampling = options.lightSampling;
-  context.cosineSampling = options.cosineSampling;
-  context.mis = options.mis;
-  return context;
-}
-
 Color renderSample(TraceContext& context, const RenderOptions& options, const CameraBasis& basis, uint32_t sample) {
   const RenderSettings& settings = context.scene.render;
   const IVec2 pixel = context.pixel;
@@ -76,14 +67,14 @@ Color renderSample(TraceContext& context, const RenderOptions& options, const Ca
   const Point2 raster = pixelSamplePosition(pixel, sampler.next2D());
   const Ray ray = generateCameraRay(context.scene.camera, basis, raster, {settings.width, settings.height});
   return options.radiance ? options.radiance(context, ray, sampler)
-                          : traceRadiance(context, options.integrator, ray, sampler);
+                          : traceRadiance(context, options, ray, sampler);
 }
 
 ProgressiveRender::ProgressiveRender(const Scene& scene, const RenderOptions& options)
     : scene_(scene),
       options_(options),
       basis_(cameraBasis(scene.camera)),
-      accelerator_(scene),
+      accelerator_(scene, options.traversal),
       lights_(Lights::fromScene(scene, options.environmentSampling)),
       start_(std::chrono::steady_clock::now()),
       sum_(size_t(scene.render.width) * size_t(scene.render.height), Color(0.0f)),
@@ -103,7 +94,7 @@ bool ProgressiveRender::step() {
   const int passBegin = passBegin_;
   const int passEnd = std::min(scene_.render.samplesPerPixel, passBegin + passSize_);
   forEachTile(width, height, options_.tileSize, options_.threads, [&](const Tile& tile) {
-    TraceContext context = makeTraceContext(scene_, accelerator_, lights_, options_);
+    TraceContext context(scene_, accelerator_, lights_);
     uint64_t tileSamples = 0;
     for (int y = tile.begin.y; y < tile.end.y; ++y) {
       for (int x = tile.begin.x; x < tile.end.x; ++x) {

@@ -80,14 +80,15 @@ std::optional<LightDirection> lightDirection(const Point3& from, const AreaSampl
 //      directly: return black.
 //   2. Each point light in context.lights.points (intensity I): one exact
 //      sample, wi towards it, radiance f * I * cos(theta) / r^2.
-//   3. Each area light in context.lights.areas: context.lightSamples samples
-//      light.sample(sampler.next2D()) -> lightDirection(...) -> add
+//   3. Each area light in context.lights.areas: context.settings.lightSamples
+//      samples light.sample(sampler.next2D()) -> lightDirection(...) -> add
 //      f * sample.radiance * cos(theta) / pdfSolidAngle; divide the sum by
 //      the number of samples.
 //   4. The environment, if any (context.lights.environment): the same with
-//      context.lightSamples samples environment->sample(sampler.next2D()),
-//      which already gives wi, the radiance and pdfSolidAngle; its shadow
-//      ray has no end (range max = kInfinity).
+//      context.settings.lightSamples samples of
+//      environment->sample(sampler.next2D()), which already gives wi, the
+//      radiance and pdfSolidAngle; its shadow ray has no end (range max =
+//      kInfinity).
 //   5. For every sample: skip it if cos(theta) = dot(wi, bsdf.normal()) <= 0
 //      or f is black; otherwise trace a shadow ray from
 //        origin = offsetRayOrigin(hit.point, hit.geometricNormal, wi)

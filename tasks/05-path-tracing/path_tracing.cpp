@@ -64,8 +64,8 @@ float diffuseDirectionPdf(const Vec3& wi) {
 //      diffuse bounce that light was already counted by step 4 (next-event
 //      estimation, which samples area lights and the environment) at the
 //      previous vertex.
-//   3. If bounce >= context.maxDepth, stop: -m counts bounces, so -m 0 shows
-//      only emitters and -m 1 is direct lighting.
+//   3. If bounce >= context.settings.maxDepth, stop: -m counts bounces, so
+//      -m 0 shows only emitters and -m 1 is direct lighting.
 //   4. Bsdf bsdf(material, hit, wo); add throughput * estimateDirectLighting(...).
 //   5. Sample the next direction: s = bsdf.sample(wo, sampler.next2D()); stop if
 //      there is none or s->pdf is 0. throughput *= s->f * |cos| / s->pdf

@@ -337,7 +337,7 @@ TEST_CASE("T4.4 direct lighting: a tiny, bright light gives the right mean and n
 }
 
 TEST_CASE("T4.4 direct lighting: -l averages several samples per area light (same mean, less variance)" *
-          grading(2, "take context.lightSamples samples of each area light and divide their sum by that count")) {
+          grading(2, "take context.settings.lightSamples samples of each area light and divide their sum by that count")) {
   Scene scene = floorScene();
   uint32_t light = addMaterial(scene, Color(0.0f), Color(4.0f));
   addQuad(scene, {-1.0f, 1.0f, -0.3f}, {2.0f, 0, 0}, {0, 0, 0.6f}, light);

@@ -39,7 +39,7 @@ MeanEstimate furnace(const Material& material, float environment, int paths) {
   scene.environment = Environment{};
   scene.environment->color = Color(environment);
   Rig rig(std::move(scene));
-  TraceContext context = rig.context(64, 1, true);
+  TraceContext context = rig.context(64, 1);
   Random random(61);
   std::vector<calls::PathQuery> queries;
   for (int i = 0; i < paths; ++i) {
@@ -271,7 +271,7 @@ TEST_CASE("T6.5 glass of index 1 is invisible: the light behind it arrives uncha
   uint32_t emitter = addMaterial(scene, Color(0.0f), Color(3.0f));
   addQuad(scene, {-5, -5, -3}, {10, 0, 0}, {0, 10, 0}, emitter);  // behind the sphere, facing +z
   Rig rig(std::move(scene));
-  TraceContext context = rig.context(8, 1, false);
+  TraceContext context = rig.context(8, 1);
   Random random(67);
   std::vector<calls::PathQuery> queries;
   for (int i = 0; i < 2000; ++i) {

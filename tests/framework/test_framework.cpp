@@ -13,8 +13,10 @@
 #include "course_scene.h"
 #include "pathlab/error.h"
 #include "pathlab/image.h"
+#include "pathlab/procedural.h"
 #include "pathlab/random.h"
 #include "pathlab/render.h"
+#include "pathlab/strategies.h"
 #include "pathlab/scene_io.h"
 #include "pathlab/tasks/path_tracing.h"
 #include "meshes.h"
@@ -501,6 +503,29 @@ TEST_CASE("render: 1, 2 and 8 threads, and any tile size, give bit-identical ima
   CHECK_FALSE(bitIdentical(one, render(scene, options).image));  // the seed matters
 }
 
+TEST_CASE("render: --accel fast and task3 give bit-identical images (the same hits, in the same order)") {
+  // The scan-like mesh (tens of thousands of tiny triangles, shared edges)
+  // and the default box with its spheres, mirror and glass.
+  for (int which = 0; which < 2; ++which) {
+    Scene scene = which == 0 ? defaultScene() : scanLikeScene();
+    scene.render.width = 64;
+    scene.render.height = 48;
+    scene.render.samplesPerPixel = 4;
+    RenderOptions options;
+    options.progress = false;
+    options.traversal = Traversal::Task3;
+    const RenderResult task3 = render(scene, options);
+    options.traversal = Traversal::Fast;
+    const RenderResult fast = render(scene, options);
+    CAPTURE(which);
+    CHECK(bitIdentical(task3.image, fast.image));
+    CHECK(task3.stats.rays == fast.stats.rays);
+  }
+  CHECK(defaultTraversal("1:reference 2:reference 3:reference 4:student") == Traversal::Fast);
+  CHECK(defaultTraversal("1:reference 2:reference 3:student 4:reference") == Traversal::Task3);
+  CHECK(defaultTraversal("unknown") == Traversal::Task3);
+}
+
 TEST_CASE("render: a cancelled render stops early and says how far it got") {
   Scene scene = defaultScene();
   scene.render.samplesPerPixel = 64;
@@ -585,7 +610,7 @@ TEST_CASE("random: the sampler is uniform in [0, 1) and independent across dimen
   CHECK(a.next1D() == b.next1D());
 }
 
-TEST_CASE("strategies: every reference sampling strategy is unbiased (closed enclosure and sky furnace)") {
+TEST_CASE("strategies: every sampling strategy is unbiased (closed enclosure and sky furnace)") {
   // Inside a closed enclosure of albedo 1/2 and emission 1/2, L = 1 exactly;
   // each strategy must agree within 5 standard errors (false failure 5.7e-7).
   Scene enclosure;
@@ -601,29 +626,29 @@ TEST_CASE("strategies: every reference sampling strategy is unbiased (closed enc
   sky.environment->image = Image(16, 8, Color(0.5f));
   struct Case {
     const char* name;
-    void (*apply)(TraceContext&);
+    SamplingStrategy strategy;
+    int lightSamples = 1;
   };
   const Case cases[] = {
-      {"reference", [](TraceContext&) {}},
-      {"mis-balance", [](TraceContext& c) { c.mis = MisHeuristic::Balance; }},
-      {"mis-power", [](TraceContext& c) { c.mis = MisHeuristic::Power; }},
-      {"mis-power, 4 light samples", [](TraceContext& c) { c.mis = MisHeuristic::Power, c.lightSamples = 4; }},
-      {"uniform-hemisphere", [](TraceContext& c) { c.cosineSampling = false; }},
-      {"no-nee", [](TraceContext& c) { c.lightSampling = false; }},
-      {"no-rr", [](TraceContext& c) { c.russianRoulette = false; }},
+      {"recipe", {}},
+      {"mis-balance", {.mis = MisHeuristic::Balance}},
+      {"mis-power", {.mis = MisHeuristic::Power}},
+      {"mis-power, 4 light samples", {.mis = MisHeuristic::Power}, 4},
+      {"uniform-hemisphere", {.cosineSampling = false}},
+      {"no-nee", {.lightSampling = false}},
+      {"no-rr", {.russianRoulette = false}},
   };
   test::Rig insideRig(enclosure), skyRig(sky);
   for (const Case& strategy : cases) {
     for (int scene = 0; scene < 2; ++scene) {
-      TraceContext context = scene == 0 ? insideRig.context(60) : skyRig.context(8);
-      strategy.apply(context);
+      TraceContext context = scene == 0 ? insideRig.context(60, strategy.lightSamples) : skyRig.context(8, strategy.lightSamples);
       test::Random random(81 + uint32_t(scene));
       test::MeanEstimate m;
       for (int i = 0; i < 20000; ++i) {
         Sampler sampler(uint32_t(i), 0, test::testSeed(81));
         Ray ray = scene == 0 ? Ray{Point3(0.1f, 0.0f, -0.2f), Vec3(random.unitVector())}
                              : Ray{Point3(0.0f, 0.0f, 4.0f), Vec3(glm::normalize(random.inCube(0.6) - test::DVec3(0, 0, 4)))};
-        m.add(tracePath(context, ray, sampler).y);
+        m.add(traceWithStrategy(context, ray, sampler, strategy.strategy).y);
       }
       const double expected = scene == 0 ? 1.0 : 0.4;
       CAPTURE(strategy.name);
@@ -631,5 +656,49 @@ TEST_CASE("strategies: every reference sampling strategy is unbiased (closed enc
       INFO(m.describe(expected));
       CHECK(m.agrees(expected));
     }
+  }
+}
+
+namespace {
+
+// Diffuse, mirror and glass spheres on a floor under a map with a bright spot.
+Scene mappedSkyScene() {
+  Scene scene;
+  scene.materials.push_back(Material{.name = "floor", .albedo = Color(0.6f)});
+  scene.materials.push_back(Material{.name = "mirror", .type = MaterialType::Mirror, .albedo = Color(0.9f)});
+  scene.materials.push_back(Material{.name = "glass", .type = MaterialType::Glass, .albedo = Color(1.0f)});
+  test::addQuad(scene, {-4, -1, 4}, {8, 0, 0}, {0, 0, -8}, 0);
+  scene.spheres.push_back(Sphere{Point3(-1.2f, 0.0f, 0.0f), 1.0f, 0});
+  scene.spheres.push_back(Sphere{Point3(1.2f, 0.0f, 0.0f), 1.0f, 1});
+  scene.spheres.push_back(Sphere{Point3(0.0f, 0.5f, 1.5f), 0.5f, 2});
+  scene.environment = Environment{};
+  scene.environment->image = Image(32, 16, Color(0.3f, 0.4f, 0.6f));
+  scene.environment->image.at(20, 4) = Color(500.0f);
+  scene.camera.position = Point3(0.0f, 1.0f, 6.0f);
+  scene.camera.lookAt = Point3(0.0f, 0.0f, 0.0f);
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("strategies: the recipe strategy is the model answers' tracePath, sample for sample") {
+  // The same random numbers in the same order: bit-identical radiance on the
+  // default scene (lights, mirror, glass) and under an environment map.
+  for (int which = 0; which < 2; ++which) {
+    Scene scene = which == 0 ? defaultScene() : mappedSkyScene();
+    test::Rig rig(std::move(scene));
+    TraceContext recipe = rig.context(6, 2), strategy = rig.context(6, 2);
+    const CameraBasis basis = cameraBasis(rig.scene().camera);
+    int differing = 0;
+    for (uint32_t i = 0; i < 4000; ++i) {
+      const IVec2 pixel(int(i % 64), int(i / 64));
+      const Ray ray = generateCameraRay(rig.scene().camera, basis, Point2(pixel) * 4.0f + 0.5f, {256, 256});
+      Sampler a(i, 0, 7), b(i, 0, 7);
+      const Color x = tracePath(recipe, ray, a), y = traceWithStrategy(strategy, ray, b, SamplingStrategy{});
+      if (x != y) ++differing;
+    }
+    CAPTURE(which);
+    CHECK(differing == 0);
+    CHECK(recipe.rays == strategy.rays);
   }
 }

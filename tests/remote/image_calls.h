@@ -13,7 +13,7 @@ PATHLAB_REMOTE_CALL(RenderMoments, 110, test::PixelMoments(Scene, test::ImageOpt
 namespace pathlab::wire {
 template <>
 struct Fields<test::ImageOptions> {
-  static auto tie(test::ImageOptions& s) { return std::tie(s.integrator, s.russianRoulette, s.environmentSampling); }
+  static auto tie(test::ImageOptions& s) { return std::tie(s.integrator, s.environmentSampling); }
 };
 template <>
 struct Fields<test::PixelMoments> {

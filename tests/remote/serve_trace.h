@@ -11,7 +11,7 @@
 namespace pathlab::remote {
 
 inline TraceContext contextFor(const test::Rig& rig, const calls::TraceSettings& settings) {
-  return rig.context(settings.maxDepth, settings.lightSamples, settings.russianRoulette);
+  return rig.context(settings.maxDepth, settings.lightSamples);
 }
 
 inline void serveTraceCalls(Server& server) {

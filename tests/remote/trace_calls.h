@@ -20,7 +20,6 @@ namespace pathlab::calls {
 struct TraceSettings {
   int lightSamples = 1;
   int maxDepth = 4;
-  bool russianRoulette = true;
 };
 // One estimate: where, towards where, and its random stream.
 using DirectQuery = std::tuple<Hit, Vec3 /*wo*/, uint32_t /*pixel*/, uint64_t /*seed*/>;
@@ -32,7 +31,7 @@ PATHLAB_REMOTE_CALL(TracePaths, 102, std::vector<Color>(Scene, TraceSettings, st
 PATHLAB_REMOTE_CALL(BsdfSamples, 103, std::vector<std::optional<BsdfSample>>(Material, Hit, Vec3, std::vector<Vec2>));
 
 inline TraceSettings settingsOf(const TraceContext& context) {
-  return {context.lightSamples, context.maxDepth, context.russianRoulette};
+  return {context.settings.lightSamples, context.settings.maxDepth};
 }
 
 }  // namespace pathlab::calls
@@ -40,7 +39,7 @@ inline TraceSettings settingsOf(const TraceContext& context) {
 namespace pathlab::wire {
 template <>
 struct Fields<calls::TraceSettings> {
-  static auto tie(calls::TraceSettings& s) { return std::tie(s.lightSamples, s.maxDepth, s.russianRoulette); }
+  static auto tie(calls::TraceSettings& s) { return std::tie(s.lightSamples, s.maxDepth); }
 };
 }  // namespace pathlab::wire
 

@@ -18,7 +18,6 @@ namespace pathlab::test {
 // The render options an image test may vary (the rest are render()'s defaults).
 struct ImageOptions {
   Integrator integrator = Integrator::Path;
-  bool russianRoulette = true;
   EnvironmentSampling environmentSampling = EnvironmentSampling::Importance;
 };
 
@@ -34,7 +33,6 @@ struct PixelMoments {
 inline PixelMoments renderMoments(const Scene& scene, const ImageOptions& imageOptions, int threads = 0) {
   RenderOptions options;
   options.integrator = imageOptions.integrator;
-  options.russianRoulette = imageOptions.russianRoulette;
   options.environmentSampling = imageOptions.environmentSampling;
   options.progress = false;
   const Accelerator accelerator(scene);
@@ -52,7 +50,7 @@ inline PixelMoments renderMoments(const Scene& scene, const ImageOptions& imageO
   if (!m.usedBvh && !scene.primitives.empty()) return m;
   std::atomic<uint64_t> nonFinite{0};
   forEachTile(m.width, m.height, 8, threads, [&](const Tile& tile) {
-    TraceContext context = makeTraceContext(scene, accelerator, lights, options);
+    TraceContext context(scene, accelerator, lights);
     for (int y = tile.begin.y; y < tile.end.y; ++y) {
       for (int x = tile.begin.x; x < tile.end.x; ++x) {
         context.pixel = {x, y};

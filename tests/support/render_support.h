@@ -18,11 +18,10 @@ class Rig {
     lights_ = Lights::fromScene(*scene_);
   }
 
-  TraceContext context(int maxDepth = 4, int lightSamples = 1, bool russianRoulette = true) const {
+  TraceContext context(int maxDepth = 4, int lightSamples = 1) const {
     TraceContext c(*scene_, *accelerator_, lights_);
-    c.maxDepth = maxDepth;
-    c.lightSamples = lightSamples;
-    c.russianRoulette = russianRoulette;
+    c.settings.maxDepth = maxDepth;
+    c.settings.lightSamples = lightSamples;
     return c;
   }
   const Scene& scene() const { return *scene_; }

@@ -43,18 +43,6 @@ class AreaLight {
 
 enum class EnvironmentSampling { Importance, Uniform };
 
-// Multiple importance sampling of light samples and BSDF samples (Veach):
-// a sample drawn with pdf p_a, where the other strategy would have drawn it
-// with pdf p_b, is weighted p_a / (p_a + p_b) (balance) or
-// p_a^2 / (p_a^2 + p_b^2) (power). None: light samples only, as in task 4-5.
-enum class MisHeuristic { None, Balance, Power };
-
-inline float misWeight(MisHeuristic heuristic, float pdfThis, float pdfOther) {
-  if (heuristic == MisHeuristic::Balance) return pdfThis / (pdfThis + pdfOther);
-  const float a = pdfThis * pdfThis, b = pdfOther * pdfOther;
-  return a / (a + b);
-}
-
 // A direction towards the environment, with the radiance arriving from it.
 struct EnvironmentLightSample {
   Vec3 direction{0.0f};    // unit, towards the sky

@@ -13,12 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "pathlab/trace.h"
 #include "pathlab/image.h"
 #include "pathlab/random.h"
 #include "pathlab/ray.h"
 #include "pathlab/scene.h"
+#include "pathlab/strategies.h"
 #include "pathlab/tasks/camera_rays.h"
+#include "pathlab/trace.h"
 
 namespace pathlab {
 
@@ -38,11 +39,11 @@ using RadianceFunction = std::function<Color(TraceContext& context, const Ray& r
 
 struct RenderOptions {
   Integrator integrator = Integrator::Path;
-  bool russianRoulette = true;
-  bool lightSampling = true;
-  bool cosineSampling = true;
-  MisHeuristic mis = MisHeuristic::None;
+  // For Integrator::Path: the recipe runs task 5's tracePath; any other
+  // strategy runs the framework's traceWithStrategy (pathlab/strategies.h).
+  SamplingStrategy strategy;
   EnvironmentSampling environmentSampling = EnvironmentSampling::Importance;
+  Traversal traversal = Traversal::Task3;  // --accel: how rays walk task 3's tree
   int threads = 0;    // 0: all hardware threads
   int tileSize = 16;
   int maxPassSpp = 64;  // the largest pass; the GUI uses small passes to refresh often
@@ -67,8 +68,9 @@ struct RenderResult {
   RenderStats stats;
 };
 
-// Radiance arriving along one camera ray, by the chosen integrator.
-Color traceRadiance(TraceContext& context, Integrator integrator, const Ray& ray, Sampler& sampler);
+// Radiance arriving along one camera ray, by the chosen integrator (and,
+// for paths, strategy).
+Color traceRadiance(TraceContext& context, const RenderOptions& options, const Ray& ray, Sampler& sampler);
 
 RenderResult render(const Scene& scene, const RenderOptions& options);
 
@@ -109,9 +111,6 @@ class ProgressiveRender {
   std::unique_ptr<ProgressBar> progress_;
 };
 
-// The trace context render() gives each thread.
-TraceContext makeTraceContext(const Scene& scene, const Accelerator& accelerator, const Lights& lights,
-                              const RenderOptions& options);
 
 // Sample `sample` of pixel context.pixel, exactly as render() takes it (same
 // random numbers): the debugger re-traces single pixels with it.

@@ -1,7 +1,7 @@
 // What an estimator needs while tracing one sample: the scene, its BVH and
-// lights, the render settings, and per-thread counters. Estimators trace
-// rays through intersect() and occluded() so rays are counted (rays/s) and,
-// in the debugger, recorded.
+// lights, the render settings, and per-thread state (pixel, counters, log).
+// Estimators trace rays through intersect() and occluded() so rays are
+// counted (rays/s) and, in the debugger, recorded.
 #pragma once
 
 #include <cstdint>
@@ -27,19 +27,18 @@ struct TraceContext {
   const Scene& scene;
   const Accelerator& accelerator;
   const Lights& lights;
-  int lightSamples = 1;         // -l: samples per area light
-  int maxDepth = 4;             // -m: the most bounces a path may make
-  bool russianRoulette = true;  // end long paths at random (unbiased)
-  // Sampling strategies the reference path tracer honours, for comparing
-  // them (pathlab-bench converge; "going further" in the handouts):
-  bool lightSampling = true;    // next-event estimation; off: BSDF sampling only
-  bool cosineSampling = true;   // diffuse bounces cosine-weighted; off: uniform hemisphere
-  MisHeuristic mis = MisHeuristic::None;  // combine light and BSDF samples (reference only)
+  // The render settings: -l (settings.lightSamples, samples per area light)
+  // and -m (settings.maxDepth, the most bounces a path may make). A copy of
+  // scene.render that a test or a debugger view may change.
+  RenderSettings settings;
+
+  // Per-thread state.
   IVec2 pixel{0, 0};            // the pixel being rendered
   uint64_t rays = 0;            // rays traced by this thread
   std::vector<TracedRay>* log = nullptr;  // when set, every ray is recorded
 
-  TraceContext(const Scene& s, const Accelerator& a, const Lights& l) : scene(s), accelerator(a), lights(l) {}
+  TraceContext(const Scene& s, const Accelerator& a, const Lights& l)
+      : scene(s), accelerator(a), lights(l), settings(s.render) {}
 
   // Closest hit within range.
   std::optional<Hit> intersect(const Ray& ray, Interval range);

@@ -26,14 +26,6 @@ bool visible(TraceContext& context, const Hit& hit, const Vec3& wi, float distan
   return !context.occluded(Ray{origin, toLight / remaining}, Interval{0.0f, remaining * (1.0f - kShadowShortening)});
 }
 
-// With multiple importance sampling (a reference strategy, off by default)
-// a light sample shares its direction with the path tracer's BSDF sample.
-// Multi-sample MIS: lightSamples light samples against one BSDF sample.
-float lightSampleWeight(const TraceContext& context, float pdfLight, float pdfBsdf) {
-  if (context.mis == MisHeuristic::None) return 1.0f;
-  return misWeight(context.mis, float(context.lightSamples) * pdfLight, pdfBsdf);
-}
-
 }  // namespace
 
 Color lambertianBrdf(const Color& albedo) { return albedo * kInvPi; }
@@ -77,7 +69,7 @@ Color estimateDirectLighting(TraceContext& context, const Hit& hit, const Bsdf& 
 
   // Point lights: a delta distribution, one exact sample each.
   for (const PointLight& light : context.lights.points) {
-    if (&light != nullptr) continue;
+    if (maxComponent(light.intensity) >= 0.0f) continue;
     const Vec3 toLight = light.position - hit.point;
     const float distanceSquared = glm::dot(toLight, toLight);
     if (!(distanceSquared > 0.0f)) continue;
@@ -90,10 +82,10 @@ Color estimateDirectLighting(TraceContext& context, const Hit& hit, const Bsdf& 
     radiance += f * light.intensity * (cosSurface / distanceSquared);
   }
 
-  // Area lights: the mean of lightSamples estimates f Le cos / p(w).
+  // Area lights: the mean of settings.lightSamples estimates f Le cos / p(w).
   for (const AreaLight& light : context.lights.areas) {
     Color sum(0.0f);
-    for (int i = 0; i < context.lightSamples; ++i) {
+    for (int i = 0; i < context.settings.lightSamples; ++i) {
       const AreaSample sample = light.sample(sampler.next2D());
       const std::optional<LightDirection> direction = lightDirection(hit.point, sample);
       if (!direction) continue;
@@ -101,17 +93,16 @@ Color estimateDirectLighting(TraceContext& context, const Hit& hit, const Bsdf& 
       if (cosSurface <= 0.0f) continue;
       const Color f = bsdf.f(wo, direction->wi);
       if (maxComponent(f) <= 0.0f || !visible(context, hit, direction->wi, direction->distance)) continue;
-      sum += f * sample.radiance * (cosSurface / direction->pdfSolidAngle) *
-             lightSampleWeight(context, direction->pdfSolidAngle, bsdf.pdf(wo, direction->wi));
+      sum += f * sample.radiance * (cosSurface / direction->pdfSolidAngle);
     }
-    radiance += sum / float(context.lightSamples);
+    radiance += sum / float(context.settings.lightSamples);
   }
 
   // The environment: a light at infinity, sampled like an area light but
   // directly in solid angle.
   if (const std::optional<EnvironmentLight>& environment = context.lights.environment) {
     Color sum(0.0f);
-    for (int i = 0; i < context.lightSamples; ++i) {
+    for (int i = 0; i < context.settings.lightSamples; ++i) {
       const std::optional<EnvironmentLightSample> sample = environment->sample(sampler.next2D());
       if (!sample) continue;
       const float cosSurface = glm::dot(sample->direction, bsdf.normal());
@@ -121,10 +112,9 @@ Color estimateDirectLighting(TraceContext& context, const Hit& hit, const Bsdf& 
           !visible(context, hit, sample->direction, kInfinity)) {
         continue;
       }
-      sum += f * sample->radiance * (cosSurface / sample->pdfSolidAngle) *
-             lightSampleWeight(context, sample->pdfSolidAngle, bsdf.pdf(wo, sample->direction));
+      sum += f * sample->radiance * (cosSurface / sample->pdfSolidAngle);
     }
-    radiance += sum / float(context.lightSamples);
+    radiance += sum / float(context.settings.lightSamples);
   }
   return radiance;
 }

@@ -43,7 +43,7 @@ struct Bvh {
 struct TraversalStats {
   uint32_t nodesVisited = 0;    // nodes popped and processed
   uint32_t boxTests = 0;        // calls of intersectBox
-  uint32_t primitiveTests = 0;  // calls of LeafGeometry::intersect / occludes
+  uint32_t primitiveTests = 0;  // calls of LeafGeometry::intersect
 };
 
 // T3.1: the ray parameter where the ray enters `box` within `range` (range.min

@@ -14,7 +14,7 @@ Vec3 sampleDiffuseDirection(Vec2 u);
 float diffuseDirectionPdf(const Vec3& wi);
 
 // T5.2: the radiance arriving along `ray` (a camera ray): emission, direct
-// lighting at every vertex, bounces up to context.maxDepth.
+// lighting at every vertex, bounces up to context.settings.maxDepth.
 Color tracePath(TraceContext& context, Ray ray, Sampler& sampler);
 
 }  // namespace pathlab
