@@ -1,5 +1,7 @@
 #include "pathlab/bsdf.h"
 
+#include <cmath>
+
 #include "pathlab/tasks/direct_lighting.h"
 #include "pathlab/tasks/mirror_glass.h"
 #include "pathlab/tasks/path_tracing.h"
@@ -39,7 +41,10 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, Vec2 u) const {
     BsdfSample s = material_.type == MaterialType::Mirror
                        ? sampleMirror(woLocal, material_.albedo)
                        : sampleGlass(woLocal, material_.albedo, material_.transmittance, material_.ior, u.x);
-    if (!(glm::dot(s.wi, s.wi) > 0.0f) || !isFinite(s.wi)) return std::nullopt;
+    // A grazing direction (cos theta = 0) carries no light, and its f (value / |cos|) is not finite.
+    if (!(glm::dot(s.wi, s.wi) > 0.0f) || !isFinite(s.wi) || !(std::abs(s.wi.z) > 0.0f) || !isFinite(s.f)) {
+      return std::nullopt;
+    }
     s.wi = glm::normalize(frame.toWorld(s.wi));
     s.isDelta = true;
     return s;

@@ -68,8 +68,9 @@ float diffuseDirectionPdf(const Vec3& wi) {
 //      -m 0 shows only emitters and -m 1 is direct lighting.
 //   4. Bsdf bsdf(material, hit, wo); add throughput * estimateDirectLighting(...).
 //   5. Sample the next direction: s = bsdf.sample(wo, sampler.next2D()); stop if
-//      there is none or s->pdf is 0. throughput *= s->f * |cos| / s->pdf
-//      (for delta samples just s->f), cos = dot(s->wi, bsdf.normal()).
+//      there is none or s->pdf is 0. throughput *= s->f * |cos| / s->pdf,
+//      cos = dot(s->wi, bsdf.normal()) (for every lobe: a mirror's f holds
+//      1 / |cos| so this gives its reflectance, task 6).
 //   6. Russian roulette from the third bounce on: continue with probability
 //      q = min(0.95, max component of throughput); if sampler.next1D() >= q
 //      stop, else throughput /= q. (Without the division the image is too

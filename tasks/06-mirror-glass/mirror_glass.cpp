@@ -62,8 +62,10 @@ float schlickFresnel(float cosTheta, float ior) {
 
 // T6.4 — The perfect mirror reflects all light into one direction: a delta
 // distribution. It cannot be evaluated for arbitrary wi (f = 0 there; direct
-// lighting skips it), only sampled: wi = reflect(wo), and the path weight
-// f cos / pdf is the reflectance. Return it in `f` with pdf = 1, isDelta = true.
+// lighting skips it), only sampled: wi = reflect(wo). The path tracer weighs
+// every sample by f |cos theta| / pdf (task 5), so a delta lobe stores
+//   f = reflectance / |cos theta|,  pdf = 1,  isDelta = true,
+// with cos theta = wi.z: the weight is then the reflectance.
 BsdfSample sampleMirror(const Vec3& wo, const Color& reflectance) {
   // TODO(T6.4): the mirror sample.
   PATHLAB_TODO("T6.4");
@@ -72,10 +74,13 @@ BsdfSample sampleMirror(const Vec3& wo, const Color& reflectance) {
 }
 
 // T6.5 — Glass reflects a fraction F (Fresnel) and transmits 1 - F.
-// Choose one: with u < F reflect (weight = reflectance, pdf = F), else
-// refract (weight = transmittance * (n_o / n_t)^2, pdf = 1 - F), so each
-// weight is (value * probability) / probability. On total internal
-// reflection always reflect (pdf = 1).
+// Choose one, and store f as in T6.4 (the lobe's value over |cos theta|):
+//   u < F:  reflect,  f = reflectance * F / |cos theta|,  pdf = F
+//   else:   refract,  f = transmittance * (1 - F) * (n_o / n_t)^2 / |cos theta|,
+//           pdf = 1 - F
+// so each weight f |cos theta| / pdf is (value * probability) / probability:
+// the reflectance, or the transmittance times (n_o / n_t)^2. On total
+// internal reflection always reflect (f = reflectance / |cos theta|, pdf = 1).
 //
 // The cosine for Schlick is the one on the outside side: wo.z when entering,
 // |wi.z| of the refracted direction when leaving.

@@ -52,7 +52,7 @@ Color tracePath(TraceContext& context, Ray ray, Sampler& sampler) {
     const std::optional<BsdfSample> sample = bsdf.sample(wo, sampler.next2D());
     if (!sample || !(sample->pdf > 0.0f)) break;
     const float cosine = std::abs(glm::dot(sample->wi, bsdf.normal()));
-    throughput *= sample->f * (sample->isDelta ? 1.0f : cosine / sample->pdf);
+    throughput *= sample->f * (cosine / sample->pdf);
     if (!(maxComponent(throughput) > 0.0f)) break;
     countEmission = sample->isDelta;
 

@@ -48,7 +48,7 @@ Color tracePath(TraceContext& context, Ray ray, Sampler& sampler) {
     if (!sample || !(sample->pdf > 0.0f)) break;
     const float cosine = std::abs(glm::dot(sample->wi, bsdf.normal()));
     (void)cosine;
-    throughput *= sample->f * (sample->isDelta ? 1.0f : 1.0f / sample->pdf);
+    throughput *= sample->f / sample->pdf;
     if (!(maxComponent(throughput) > 0.0f)) break;
     countEmission = sample->isDelta;
 

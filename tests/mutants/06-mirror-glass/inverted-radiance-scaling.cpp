@@ -29,10 +29,12 @@ float schlickFresnel(float cosTheta, float ior) {
   return f0 + (1.0f - f0) * (m * m) * (m * m) * m;
 }
 
+// A delta lobe's f carries 1 / |cos theta|, so that f |cos theta| / pdf is
+// the fraction of light the lobe passes on, as for any other sample.
 BsdfSample sampleMirror(const Vec3& wo, const Color& reflectance) {
   BsdfSample s;
   s.wi = reflect(wo);
-  s.f = reflectance;  // f cos / pdf for a delta lobe: the reflectance
+  s.f = reflectance / std::abs(s.wi.z);
   s.pdf = 1.0f;
   s.isDelta = true;
   return s;
@@ -44,7 +46,7 @@ BsdfSample sampleGlass(const Vec3& wo, const Color& reflectance, const Color& tr
   const std::optional<Vec3> refracted = refract(wo, ior);
   if (!refracted) {  // total internal reflection: all light reflects
     s.wi = reflect(wo);
-    s.f = reflectance;
+    s.f = reflectance / std::abs(s.wi.z);
     s.pdf = 1.0f;
     return s;
   }
@@ -55,7 +57,7 @@ BsdfSample sampleGlass(const Vec3& wo, const Color& reflectance, const Color& tr
   const float fresnel = ior == 1.0f ? 0.0f : schlickFresnel(cosOutside, ior);
   if (u < fresnel) {
     s.wi = reflect(wo);
-    s.f = reflectance;  // reflectance * F / P(reflect) with P(reflect) = F
+    s.f = reflectance * fresnel / std::abs(s.wi.z);  // weight f |cos| / pdf = reflectance
     s.pdf = fresnel;
     return s;
   }
@@ -63,7 +65,7 @@ BsdfSample sampleGlass(const Vec3& wo, const Color& reflectance, const Color& tr
   // Radiance L / n^2 is invariant across the boundary: carrying it from the
   // far side (index n_i) to wo's side (index n_o) scales by (n_o / n_i)^2.
   const float nFrom = wo.z > 0.0f ? 1.0f : ior, nTo = wo.z > 0.0f ? ior : 1.0f;
-  s.f = transmittance * ((nTo * nTo) / (nFrom * nFrom));
+  s.f = transmittance * ((1.0f - fresnel) * (nTo * nTo) / (nFrom * nFrom)) / std::abs(s.wi.z);
   s.pdf = 1.0f - fresnel;
   return s;
 }

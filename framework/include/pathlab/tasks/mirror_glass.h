@@ -24,13 +24,14 @@ std::optional<Vec3> refract(const Vec3& wo, float ior);
 // at angle theta (cosTheta = cos of the angle on the outside, index 1, side).
 float schlickFresnel(float cosTheta, float ior);
 
-// T6.4: the perfect mirror: a delta lobe. The sample's `f` holds the whole
-// path weight f cos / pdf (= reflectance), its pdf is 1.
+// T6.4: the perfect mirror: a delta lobe. f = reflectance / |cos theta|
+// and pdf = 1, so the path weight f |cos theta| / pdf is the reflectance
+// (bsdf_sample.h: one convention for every lobe).
 BsdfSample sampleMirror(const Vec3& wo, const Color& reflectance);
 
 // T6.5: smooth glass: reflect with the Fresnel probability, else refract.
-// `u` in [0, 1) chooses. The sample's `f` holds the path weight, `pdf` the
-// probability of the lobe chosen.
+// `u` in [0, 1) chooses. `pdf` is the probability of the lobe chosen and `f`
+// is such that f |cos theta| / pdf is that lobe's path weight.
 BsdfSample sampleGlass(const Vec3& wo, const Color& reflectance, const Color& transmittance, float ior, float u);
 
 }  // namespace pathlab
