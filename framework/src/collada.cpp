@@ -25,15 +25,14 @@
 #include "pathlab/error.h"
 #include "pathlab/input_file.h"
 #include "pathlab/scene_io.h"
+#include "collada_document.h"
 
 namespace pathlab {
 namespace {
 
-std::string printable(std::string_view text) { return printableLine(text); }
+using collada::formatted;
 
-// Deeper XML is refused: COLLADA files nest about 10 levels, and reading
-// nodes recurses once per level.
-constexpr size_t kMaxXmlDepth = 256;
+std::string printable(std::string_view text) { return printableLine(text); }
 
 void warn(const std::string& file, const std::string& what) {
   std::fputs(("warning: " + printable(file + ": " + what) + "\n").c_str(), stderr);
@@ -41,18 +40,6 @@ void warn(const std::string& file, const std::string& what) {
 
 // "1 more node", "2 more nodes"
 std::string count(size_t n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
-
-// "(0.93 0.79 0.40)"
-std::string formatted(const Vec3& v) {
-  std::string out = "(";
-  for (int i = 0; i < 3; ++i) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.2f", double(std::abs(v[i]) < 5e-3f ? 0.0f : v[i]));
-    if (i) out += ' ';
-    out += buffer;
-  }
-  return out + ")";
-}
 
 // A 3x3 part that maps no volume to zero volume, relative to its columns'
 // lengths (so uniformly scaled or tiny transforms still count as usable).
@@ -65,20 +52,11 @@ bool usableLinearPart(const glm::mat4& m) {
 
 class ColladaReader {
  public:
-  explicit ColladaReader(const std::string& path) : file_(path) {
-    const std::string text = readInputFile(path, "COLLADA file", kMaxColladaBytes);
-    pugi::xml_parse_result parsed = document_.load_buffer(text.data(), text.size());
-    if (!parsed) {
-      throw Error(printable(path + ": invalid XML at byte " + std::to_string(parsed.offset) + ": " + parsed.description()));
-    }
-    root_ = document_.child("COLLADA");
-    if (!root_) throw Error(printable(path + ": not a COLLADA file (no <COLLADA> element)"));
-    indexIds(root_);
-  }
+  explicit ColladaReader(const std::string& path) : doc_(path) {}
 
   Scene read() {
-    scene_.source = file_;
-    pugi::xml_node visualScene = resolve(root_.child("scene").child("instance_visual_scene").attribute("url").value(),
+    scene_.source = doc_.file();
+    pugi::xml_node visualScene = doc_.resolve(doc_.root().child("scene").child("instance_visual_scene").attribute("url").value(),
                                          "scene/instance_visual_scene");
     for (pugi::xml_node node : visualScene.children("node")) readNode(node, glm::mat4(1.0f), {});
     placeLights();
@@ -91,182 +69,18 @@ class ColladaReader {
   }
 
  private:
-  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-    throw Error(printable(file_ + ": " + where + ": " + what));
-  }
-
-  // Every element with an id, walked without recursion; refuses nesting
-  // deeper than kMaxXmlDepth.
-  void indexIds(pugi::xml_node root) {
-    std::vector<std::pair<pugi::xml_node, size_t>> pending{{root, 0}};
-    while (!pending.empty()) {
-      auto [node, depth] = pending.back();
-      pending.pop_back();
-      if (depth > kMaxXmlDepth) {
-        fail(node.path().substr(0, 80), "elements nest deeper than " + std::to_string(kMaxXmlDepth) + " levels");
-      }
-      if (const char* id = node.attribute("id").value(); *id) ids_[id] = node;
-      for (pugi::xml_node child : node.children()) pending.emplace_back(child, depth + 1);
-    }
-  }
-
-  pugi::xml_node resolve(const std::string& url, const std::string& where) const {
-    if (url.size() < 2 || url[0] != '#') fail(where, "expected a reference like \"#id\", got \"" + url + "\"");
-    auto it = ids_.find(url.substr(1));
-    if (it == ids_.end()) fail(where, "refers to \"" + url + "\", which the file does not define");
-    return it->second;
-  }
-
-  std::vector<float> numbers(pugi::xml_node node, const std::string& where, size_t expected = 0) const {
-    std::vector<float> values;
-    std::istringstream in(node.child_value());
-    std::string token;
-    while (in >> token) {
-      char* end = nullptr;
-      float v = std::strtof(token.c_str(), &end);
-      if (*end != '\0' || !std::isfinite(v)) fail(where, "expected numbers, got " + inQuotes(token, 40));
-      values.push_back(v);
-    }
-    if (expected && values.size() != expected) {
-      fail(where, "expected " + std::to_string(expected) + " numbers, got " + std::to_string(values.size()));
-    }
-    return values;
-  }
-
-  // An integer attribute in [min, max] (a missing one is `fallback`).
-  long integerAttribute(pugi::xml_node node, const char* name, long fallback, long max, const std::string& where) const {
-    pugi::xml_attribute attribute = node.attribute(name);
-    if (!attribute) return fallback;
-    const std::string text = attribute.value();
-    char* end = nullptr;
-    errno = 0;
-    const long value = std::strtol(text.c_str(), &end, 10);
-    if (text.empty() || *end != '\0' || errno == ERANGE || value < 0 || value > max) {
-      fail(where, std::string(name) + "=" + inQuotes(text, 40) + " is not an integer in [0, " + std::to_string(max) + "]");
-    }
-    return value;
-  }
-
-  std::vector<long> indices(pugi::xml_node node, const std::string& where) const {
-    std::vector<long> values;
-    std::istringstream in(node.child_value());
-    std::string token;
-    while (in >> token) {
-      char* end = nullptr;
-      long v = std::strtol(token.c_str(), &end, 10);
-      if (*end != '\0' || v < 0 || v == LONG_MAX) fail(where, "expected non-negative indices, got " + inQuotes(token, 40));
-      values.push_back(v);
-    }
-    return values;
-  }
-
-  // The course's <extra><technique profile="CMU462"> (or "CGL") block.
-  static pugi::xml_node courseTechnique(pugi::xml_node parent) {
-    for (pugi::xml_node technique : parent.child("extra").children("technique")) {
-      std::string profile = technique.attribute("profile").value();
-      if (profile == "CMU462" || profile == "CGL") return technique;
-    }
-    return {};
-  }
-
-  Color color(pugi::xml_node node, const std::string& where) const {
-    std::vector<float> v = numbers(node, where);
-    if (v.size() < 3) fail(where, "expected a colour of 3 or 4 numbers");
-    Color c(v[0], v[1], v[2]);
-    if (glm::any(glm::lessThan(c, Color(0.0f)))) fail(where, "colour components must not be negative");
-    return c;
-  }
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const { doc_.fail(where, what); }
 
   // ---- materials ----------------------------------------------------------
 
   uint32_t material(const std::string& url, const std::string& where) {
     auto cached = materials_.find(url);
     if (cached != materials_.end()) return cached->second;
-    pugi::xml_node material = resolve(url, where);
-    const std::string name = material.attribute("id").value();
-    pugi::xml_node effect = resolve(material.child("instance_effect").attribute("url").value(),
-                                    "material \"" + name + "\"/instance_effect");
-    const std::string effectWhere = std::string("effect \"") + effect.attribute("id").value() + "\"";
-    Material m;
-    m.name = name;
-    // The common profile's diffuse colour (phong, blinn or lambert).
-    pugi::xml_node common = effect.child("profile_COMMON").child("technique");
-    for (const char* model : {"phong", "blinn", "lambert"}) {
-      if (pugi::xml_node c = common.child(model).child("diffuse").child("color")) {
-        m.albedo = glm::clamp(color(c, effectWhere + "/diffuse"), 0.0f, 1.0f);
-      }
-    }
-    if (pugi::xml_node technique = courseTechnique(effect)) {
-      const std::string profile = technique.attribute("profile").value();
-      if (pugi::xml_node emission = technique.child("emission")) {
-        m.emission = color(emission.child("radiance"), effectWhere + "/emission/radiance");
-        m.albedo = Color(0.0f);  // the course's emitters reflect nothing
-      } else if (pugi::xml_node mirror = technique.child("mirror")) {
-        m.type = MaterialType::Mirror;
-        m.albedo = glm::clamp(color(mirror.child("reflectance"), effectWhere + "/mirror/reflectance"), 0.0f, 1.0f);
-      } else if (pugi::xml_node glass = technique.child("glass")) {
-        m.type = MaterialType::Glass;
-        m.albedo = glm::clamp(color(glass.child("reflectance"), effectWhere + "/glass/reflectance"), 0.0f, 1.0f);
-        m.transmittance = glm::clamp(color(glass.child("transmittance"), effectWhere + "/glass/transmittance"), 0.0f, 1.0f);
-        m.ior = numbers(glass.child("ior"), effectWhere + "/glass/ior", 1)[0];
-        if (!(m.ior > 0.0f)) fail(effectWhere + "/glass/ior", "must be positive");
-      } else if (pugi::xml_node microfacet = technique.child("microfacet")) {
-        approximateMicrofacet(m, microfacet, effectWhere, profile);
-      } else if (pugi::xml_node refraction = technique.child("refraction")) {
-        // CS184's RefractionBSDF: refraction only, no Fresnel reflection.
-        // Glass that reflects nothing is the closest; it still loses the
-        // Fresnel-reflected share instead of refracting it.
-        m.type = MaterialType::Glass;
-        m.albedo = Color(0.0f);
-        m.transmittance =
-            glm::clamp(color(refraction.child("transmittance"), effectWhere + "/refraction/transmittance"), 0.0f, 1.0f);
-        m.ior = numbers(refraction.child("ior"), effectWhere + "/refraction/ior", 1)[0];
-        if (!(m.ior > 0.0f)) fail(effectWhere + "/refraction/ior", "must be positive");
-        noteApproximation(effectWhere, "has a " + profile + " <refraction> material, which PathLab does not have; "
-                                       "it is rendered as glass that reflects nothing");
-      } else if (pugi::xml_node other = technique.first_child()) {
-        fail(effectWhere, std::string("material type <") + other.name() +
-                              "> is not supported (diffuse, emission, mirror, glass; microfacet and refraction are "
-                              "approximated)");
-      }
-    }
-    scene_.materials.push_back(m);
+    scene_.materials.push_back(collada::readMaterial(doc_, doc_.resolve(url, where), [&](const std::string& effect,
+                                                                                         const std::string& what) {
+      noteApproximation(effect, what);
+    }));
     return materials_[url] = uint32_t(scene_.materials.size() - 1);
-  }
-
-  // CS184's <microfacet> (alpha, eta, k): a rough conductor. PathLab has no
-  // glossy material, so it becomes the closest of its own: a mirror when
-  // nearly smooth (alpha <= 0.1, where the lobe is a blurred reflection),
-  // otherwise diffuse (the lobe spreads over the hemisphere). Either way in
-  // the metal's colour, its Fresnel reflectance at normal incidence
-  // ((eta - 1)^2 + k^2) / ((eta + 1)^2 + k^2) per channel: the effect's
-  // Blender diffuse colour says nothing about the metal. Without eta and k,
-  // the effect's diffuse colour is kept.
-  void approximateMicrofacet(Material& m, pugi::xml_node microfacet, const std::string& effectWhere,
-                             const std::string& profile) {
-    const std::string here = effectWhere + "/microfacet";
-    std::string what = "has a " + profile + " <microfacet> material";
-    float alpha = 0.5f;
-    if (pugi::xml_node a = microfacet.child("alpha")) {
-      alpha = numbers(a, here + "/alpha", 1)[0];
-      if (!(alpha >= 0.0f)) fail(here + "/alpha", "must not be negative");
-      char buffer[32];
-      std::snprintf(buffer, sizeof buffer, " (alpha %g)", double(alpha));
-      what += buffer;
-    }
-    what += ", which PathLab does not have; it is rendered as ";
-    const bool smooth = alpha <= 0.1f;
-    m.type = smooth ? MaterialType::Mirror : MaterialType::Diffuse;
-    what += smooth ? "a mirror" : "diffuse";
-    if (microfacet.child("eta") && microfacet.child("k")) {
-      const Color eta = color(microfacet.child("eta"), here + "/eta"), k = color(microfacet.child("k"), here + "/k");
-      const Color k2 = k * k;
-      m.albedo = glm::clamp(((eta - 1.0f) * (eta - 1.0f) + k2) / ((eta + 1.0f) * (eta + 1.0f) + k2), 0.0f, 1.0f);
-      what += " in the metal's colour at normal incidence " + formatted(m.albedo);
-    } else {
-      what += " in the effect's diffuse colour " + formatted(m.albedo);
-    }
-    noteApproximation(effectWhere, what);
   }
 
   void noteApproximation(const std::string& effectWhere, const std::string& what) {
@@ -276,36 +90,6 @@ class ColladaReader {
 
   // ---- geometry -------------------------------------------------------------
 
-  struct Source {
-    std::vector<float> values;
-    size_t stride = 3;
-    size_t count = 0;
-  };
-
-  Source source(const std::string& url, const std::string& where) const {
-    pugi::xml_node node = resolve(url, where);
-    if (std::string(node.name()) == "vertices") {  // <vertices> forwards to its POSITION source
-      for (pugi::xml_node input : node.children("input")) {
-        if (std::string(input.attribute("semantic").value()) == "POSITION") {
-          const std::string positions = input.attribute("source").value();
-          if (std::string(resolve(positions, where + "/vertices").name()) != "source") {
-            fail(where + "/vertices", "POSITION input " + inQuotes(positions) + " must name a <source>");
-          }
-          return source(positions, where + "/vertices");
-        }
-      }
-      fail(where, "<vertices> without a POSITION input");
-    }
-    pugi::xml_node array = node.child("float_array");
-    if (!array) fail(where, "source \"" + std::string(node.attribute("id").value()) + "\" has no float_array");
-    Source s;
-    s.values = numbers(array, where + "/float_array");
-    pugi::xml_node accessor = node.child("technique_common").child("accessor");
-    s.stride = accessor ? accessor.attribute("stride").as_uint(1) : 3;
-    if (s.stride < 3) fail(where, "accessor stride must be at least 3");
-    s.count = s.values.size() / s.stride;
-    return s;
-  }
 
   // `flattened`: the transform is singular (a short <matrix>, see
   // localTransform). Returns whether anything was left out for that.
@@ -317,23 +101,23 @@ class ColladaReader {
       if (kind != "polylist" && kind != "triangles") continue;
       const std::string here = where + "/" + kind;
       // Inputs: VERTEX (positions) and optionally NORMAL, each at an offset.
-      Source positions, normals;
+      collada::FloatSource positions, normals;
       long positionOffset = -1, normalOffset = -1, stride = 0;
       for (pugi::xml_node input : primitives.children("input")) {
         const std::string semantic = input.attribute("semantic").value();
-        const long offset = integerAttribute(input, "offset", 0, 63, here + "/input");
+        const long offset = doc_.integerAttribute(input, "offset", 0, 63, here + "/input");
         stride = std::max(stride, offset + 1);
-        if (semantic == "VERTEX") positions = source(input.attribute("source").value(), here), positionOffset = offset;
-        if (semantic == "NORMAL") normals = source(input.attribute("source").value(), here), normalOffset = offset;
+        if (semantic == "VERTEX") positions = doc_.source(input.attribute("source").value(), here), positionOffset = offset;
+        if (semantic == "NORMAL") normals = doc_.source(input.attribute("source").value(), here), normalOffset = offset;
       }
       if (positionOffset < 0) fail(here, "no VERTEX input");
-      const std::vector<long> p = indices(primitives.child("p"), here + "/p");
+      const std::vector<long> p = doc_.indices(primitives.child("p"), here + "/p");
       std::vector<long> counts;
       // Sizes checked against the indices actually present before anything
       // is allocated from them (a count of 300 million cost 2.4 GB).
-      const long polygons = integerAttribute(primitives, "count", 0, long(p.size()), here);
+      const long polygons = doc_.integerAttribute(primitives, "count", 0, long(p.size()), here);
       if (kind == "polylist") {
-        counts = indices(primitives.child("vcount"), here + "/vcount");
+        counts = doc_.indices(primitives.child("vcount"), here + "/vcount");
       } else {
         counts.assign(size_t(polygons), 3);
       }
@@ -409,7 +193,7 @@ class ColladaReader {
 
   // Returns whether a flattened transform left something out (readMesh).
   bool readGeometry(pugi::xml_node instance, const glm::mat4& worldFromObject, bool flattened) {
-    pugi::xml_node geometry = resolve(instance.attribute("url").value(), "instance_geometry");
+    pugi::xml_node geometry = doc_.resolve(instance.attribute("url").value(), "instance_geometry");
     const std::string where = std::string("geometry \"") + geometry.attribute("id").value() + "\"";
     std::map<std::string, std::string> bindings;  // symbol -> material url
     for (pugi::xml_node m : instance.child("bind_material").child("technique_common").children("instance_material")) {
@@ -418,10 +202,10 @@ class ColladaReader {
     if (pugi::xml_node mesh = geometry.child("mesh")) {
       return readMesh(mesh, worldFromObject, bindings, where, flattened);
     }
-    pugi::xml_node sphere = courseTechnique(geometry).child("sphere");
+    pugi::xml_node sphere = collada::Document::courseTechnique(geometry).child("sphere");
     if (!sphere) fail(where, "neither a <mesh> nor a course <sphere>");
     if (bindings.empty()) fail(where, "the sphere has no bound material");
-    const float radius = numbers(sphere.child("radius"), where + "/sphere/radius", 1)[0];
+    const float radius = doc_.numbers(sphere.child("radius"), where + "/sphere/radius", 1)[0];
     const float scale = glm::length(Vec3(worldFromObject[0]));
     // A sphere has no flattened form: it stays a sphere at the node's origin,
     // scaled by the x axis as always, unless that axis is gone too.
@@ -441,7 +225,7 @@ class ColladaReader {
     for (pugi::xml_node t : node.children()) {
       const std::string kind = t.name();
       if (kind == "matrix") {
-        std::vector<float> v = numbers(t, where + "/matrix");
+        std::vector<float> v = doc_.numbers(t, where + "/matrix");
         if (v.size() > 16) fail(where + "/matrix", "expected 16 numbers, got " + std::to_string(v.size()));
         const size_t count = v.size();
         // Fewer than 16 (a course Cornell box's camera has 15): the course's
@@ -471,13 +255,13 @@ class ColladaReader {
         }
         m = m * local;
       } else if (kind == "translate") {
-        std::vector<float> v = numbers(t, where + "/translate", 3);
+        std::vector<float> v = doc_.numbers(t, where + "/translate", 3);
         m = glm::translate(m, Vec3(v[0], v[1], v[2]));
       } else if (kind == "rotate") {
-        std::vector<float> v = numbers(t, where + "/rotate", 4);
+        std::vector<float> v = doc_.numbers(t, where + "/rotate", 4);
         if (glm::length(Vec3(v[0], v[1], v[2])) > 0.0f) m = glm::rotate(m, glm::radians(v[3]), Vec3(v[0], v[1], v[2]));
       } else if (kind == "scale") {
-        std::vector<float> v = numbers(t, where + "/scale", 3);
+        std::vector<float> v = doc_.numbers(t, where + "/scale", 3);
         m = glm::scale(m, Vec3(v[0], v[1], v[2]));
       }
     }
@@ -503,10 +287,10 @@ class ColladaReader {
     if (leftOut && flattenedNodes_++ == 0) flattenedNode_ = where;
     for (pugi::xml_node instance : node.children("instance_light")) {
       lights_.push_back(
-          {resolve(instance.attribute("url").value(), where + "/instance_light"), worldFromObject, inherited.flattened});
+          {doc_.resolve(instance.attribute("url").value(), where + "/instance_light"), worldFromObject, inherited.flattened});
     }
     for (pugi::xml_node instance : node.children("instance_camera")) {
-      camera_ = resolve(instance.attribute("url").value(), where + "/instance_camera");
+      camera_ = doc_.resolve(instance.attribute("url").value(), where + "/instance_camera");
       cameraFromWorld_ = worldFromObject;
       cameraNode_ = where;
       cameraShortMatrix_ = inherited.shortMatrix;
@@ -524,12 +308,12 @@ class ColladaReader {
     for (const Sphere& s : scene_.spheres) emissiveGeometry |= scene_.materials[s.material].isEmissive();
     for (const auto& [light, worldFromLight, flattened] : lights_) {
       const std::string where = std::string("light \"") + light.attribute("id").value() + "\"";
-      if (pugi::xml_node area = courseTechnique(light).child("area")) {
+      if (pugi::xml_node area = collada::Document::courseTechnique(light).child("area")) {
         if (emissiveGeometry || flattened) continue;  // a flattened quad has no area
         Material emitter;
         emitter.name = where;
         emitter.albedo = Color(0.0f);
-        emitter.emission = color(area.child("color"), where + "/area/color");
+        emitter.emission = doc_.color(area.child("color"), where + "/area/color");
         scene_.materials.push_back(emitter);
         // A unit square in the light's xy plane, emitting along its -z.
         const Point3 center(worldFromLight * glm::vec4(0, 0, 0, 1));
@@ -548,7 +332,7 @@ class ColladaReader {
       pugi::xml_node common = light.child("technique_common");
       if (pugi::xml_node point = common.child("point")) {
         scene_.pointLights.push_back(
-            PointLight{Point3(worldFromLight * glm::vec4(0, 0, 0, 1)), color(point.child("color"), where + "/point/color")});
+            PointLight{Point3(worldFromLight * glm::vec4(0, 0, 0, 1)), doc_.color(point.child("color"), where + "/point/color")});
         continue;
       }
       fail(where, "only point lights and the course's <area> lights are supported");
@@ -564,13 +348,13 @@ class ColladaReader {
     Vec3 forward(0, 0, -1), up(0, 1, 0);
     if (camera_) {
       pugi::xml_node perspective = camera_.child("optics").child("technique_common").child("perspective");
-      if (pugi::xml_node a = perspective.child("aspect_ratio")) aspect = numbers(a, "camera/aspect_ratio", 1)[0];
+      if (pugi::xml_node a = perspective.child("aspect_ratio")) aspect = doc_.numbers(a, "camera/aspect_ratio", 1)[0];
       if (!(aspect > 0.0f)) fail("camera/aspect_ratio", "must be positive");
       float vfov = 40.0f;
       if (pugi::xml_node y = perspective.child("yfov")) {
-        vfov = numbers(y, "camera/yfov", 1)[0];
+        vfov = doc_.numbers(y, "camera/yfov", 1)[0];
       } else if (pugi::xml_node x = perspective.child("xfov")) {
-        const float xfov = numbers(x, "camera/xfov", 1)[0];
+        const float xfov = doc_.numbers(x, "camera/xfov", 1)[0];
         vfov = glm::degrees(2.0f * std::atan(std::tan(glm::radians(xfov) * 0.5f) / aspect));
       }
       if (!(vfov > 0.0f && vfov < 180.0f)) fail("camera", "field of view out of range");
@@ -613,7 +397,7 @@ class ColladaReader {
       fail("camera/aspect_ratio", std::string(asked) + " (at most " + std::to_string(kMaxImageSide) + " a side)");
     }
     scene_.render.height = int(height);
-    checkResolution(scene_.render.width, scene_.render.height, printable(file_ + ": camera/aspect_ratio"));
+    checkResolution(scene_.render.width, scene_.render.height, printable(doc_.file() + ": camera/aspect_ratio"));
   }
 
   // A camera whose transform gives no direction (singular or not finite):
@@ -624,7 +408,7 @@ class ColladaReader {
   // y-up files, +y, Blender's front view, for z-up ones), with the file's
   // <up_axis> up.
   void frameFromBounds(const Aabb& bounds, Vec3& forward, Vec3& up) {
-    const std::string axis = root_.child("asset").child_value("up_axis");
+    const std::string axis = doc_.root().child("asset").child_value("up_axis");
     up = axis == "Z_UP" ? Vec3(0, 0, 1) : axis == "X_UP" ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
     forward = axis == "Z_UP" ? Vec3(0, 1, 0) : Vec3(0, 0, -1);
     const Point3 position(cameraFromWorld_[3]);
@@ -654,23 +438,20 @@ class ColladaReader {
         if (flattenedNodes_ > 1) line += " (and of " + count(flattenedNodes_ - 1, "more node") + ")";
         line += ", and what has no area left is left out";
       }
-      warn(file_, line);
+      warn(doc_.file(), line);
     }
-    if (!cameraReported) warn(file_, cameraNode_ + ": the camera's transform gives no usable direction, " + cameraFraming_);
+    if (!cameraReported) warn(doc_.file(), cameraNode_ + ": the camera's transform gives no usable direction, " + cameraFraming_);
     if (!approximation_.empty()) {
       std::string line = approximation_;
       if (approximatedEffects_.size() > 1) {
         const size_t n = approximatedEffects_.size() - 1;
         line += " (" + count(n, "more effect") + (n == 1 ? " is" : " are") + " approximated likewise)";
       }
-      warn(file_, line);
+      warn(doc_.file(), line);
     }
   }
 
-  std::string file_;
-  pugi::xml_document document_;
-  pugi::xml_node root_;
-  std::map<std::string, pugi::xml_node> ids_;
+  collada::Document doc_;
   std::map<std::string, uint32_t> materials_;
   struct LightInstance {
     pugi::xml_node light;

@@ -15,163 +15,22 @@
 #include "pathlab/input_file.h"
 #include "pathlab/obj_file.h"
 #include "pathlab/procedural.h"
+#include "json_object.h"
 
 namespace pathlab {
 namespace {
 
-using Json = nlohmann::json;
+using json::describe;
+using json::indexed;
+using json::Json;
+using json::Object;
+using json::Source;
 namespace fs = std::filesystem;
 
 // Limits that keep a typo from asking for terabytes (image size: scene.h).
 constexpr int kMaxSpp = 1 << 20;
-// Deeper JSON is refused while parsing: nothing in a scene nests past 5
-// levels, and describing a value back (or destroying it) must not recurse
-// 100,000 levels deep.
-constexpr int kMaxJsonDepth = 64;
-// Keys longer than this get no did-you-mean (edit distance is quadratic).
-constexpr size_t kMaxSuggestedKey = 64;
 constexpr int kMaxDepth = 1024;
 
-size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diagonal = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
-// A value named in a message, in a few words: never its whole text (a
-// 200 MB string or a deep array is described, not echoed).
-std::string describe(const Json& j) {
-  if (j.is_array()) return "array of " + std::to_string(j.size()) + " elements";
-  if (j.is_object()) return "object of " + std::to_string(j.size()) + " keys";
-  if (j.is_string()) return "string " + inQuotes(j.get_ref<const std::string&>(), 40);
-  return std::string(j.type_name()) + " " + j.dump();
-}
-
-// Where we are in the file: its name for messages and the folder that
-// relative paths resolve against.
-struct Source {
-  std::string name;
-  fs::path baseDir;
-};
-
-// A JSON object whose keys are checked against the allowed ones, with typed
-// accessors that name the field in every error.
-class Object {
- public:
-  Object(const Source& source, const Json& json, std::string path, std::vector<std::string> allowed)
-      : source_(source), json_(json), path_(std::move(path)) {
-    if (!json.is_object()) fail(path_, "expected an object, got " + describe(json));
-    for (const auto& [key, value] : json.items()) {
-      if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-      std::string message = "unknown key " + inQuotes(key);
-      std::string best;
-      size_t bestDistance = SIZE_MAX;
-      for (const std::string& candidate : allowed) {
-        if (key.size() > kMaxSuggestedKey) break;
-        size_t d = editDistance(key, candidate);
-        if (d < bestDistance) bestDistance = d, best = candidate;
-      }
-      if (!best.empty() && bestDistance <= std::max<size_t>(2, key.size() / 3)) {
-        message += " (did you mean " + inQuotes(best) + "?)";
-      } else {
-        message += " (expected one of:";
-        for (const std::string& candidate : allowed) message += " " + candidate;
-        message += ")";
-      }
-      fail(path_, message);
-    }
-  }
-
-  [[noreturn]] void fail(const std::string& field, const std::string& message) const {
-    throw Error(source_.name + ": " + (field.empty() ? "" : field + ": ") + message);
-  }
-
-  std::string field(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-  bool has(const std::string& key) const { return json_.contains(key); }
-  const Json& at(const std::string& key) const { return json_.at(key); }
-  const Source& source() const { return source_; }
-
-  float number(const std::string& key, float fallback) const {
-    return has(key) ? toFloat(at(key), field(key)) : fallback;
-  }
-
-  float positive(const std::string& key, float fallback) const {
-    float value = number(key, fallback);
-    if (!(value > 0.0f)) fail(field(key), "expected a positive number, got " + describe(at(key)));
-    return value;
-  }
-
-  int64_t integer(const std::string& key, int64_t fallback, int64_t min, int64_t max) const {
-    if (!has(key)) return fallback;
-    const Json& j = at(key);
-    double value = j.is_number() ? j.get<double>() : std::nan("");
-    if (!j.is_number() || std::floor(value) != value) {
-      fail(field(key), "expected an integer, got " + describe(j));
-    }
-    if (value < double(min) || value > double(max)) {
-      fail(field(key), "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
-                           "], got " + j.dump());  // a number
-    }
-    return j.is_number_unsigned() ? int64_t(std::min<uint64_t>(j.get<uint64_t>(), uint64_t(INT64_MAX)))
-                                  : int64_t(value);
-  }
-
-  Vec3 vec3(const std::string& key, Vec3 fallback) const {
-    return has(key) ? toVec3(at(key), field(key)) : fallback;
-  }
-
-  Color color(const std::string& key, Color fallback, float maxValue = FLT_MAX) const {
-    Color c = vec3(key, fallback);
-    for (int i = 0; i < 3; ++i) {
-      if (c[i] < 0.0f || c[i] > maxValue) {
-        std::string range = maxValue == FLT_MAX ? "non-negative" : "in [0, 1] (more would create energy)";
-        fail(field(key), "expected colour components " + range + ", got " + at(key).dump());  // 3 numbers
-      }
-    }
-    return c;
-  }
-
-  std::string string(const std::string& key, const std::string& fallback) const {
-    if (!has(key)) return fallback;
-    if (!at(key).is_string()) fail(field(key), "expected a string, got " + describe(at(key)));
-    return at(key).get<std::string>();
-  }
-
-  const Json& array(const std::string& key) const {
-    if (!at(key).is_array()) fail(field(key), "expected an array, got " + describe(at(key)));
-    return at(key);
-  }
-
-  float toFloat(const Json& j, const std::string& where) const {
-    if (!j.is_number()) fail(where, "expected a number, got " + describe(j));
-    double value = j.get<double>();
-    if (!std::isfinite(value) || std::abs(value) > double(FLT_MAX)) {
-      fail(where, "expected a finite number, got " + j.dump());  // a number
-    }
-    return float(value);
-  }
-
-  Vec3 toVec3(const Json& j, const std::string& where) const {
-    if (!j.is_array() || j.size() != 3) fail(where, "expected an array of 3 numbers, got " + describe(j));
-    return {toFloat(j[0], where + "[0]"), toFloat(j[1], where + "[1]"), toFloat(j[2], where + "[2]")};
-  }
-
- private:
-  const Source& source_;
-  const Json& json_;
-  std::string path_;
-};
-
-std::string indexed(const std::string& path, size_t i) { return path + "[" + std::to_string(i) + "]"; }
 
 // ---- camera and render settings --------------------------------------------
 
@@ -476,86 +335,11 @@ Scene parseScene(const Source& source, const Json& root) {
   return scene;
 }
 
-std::string lineAndColumn(std::string_view text, size_t byte) {
-  size_t line = 1, column = 1;
-  for (size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') ++line, column = 1;
-    else ++column;
-  }
-  return std::to_string(line) + ":" + std::to_string(column);
-}
-
-// The line of the n-th object key (counting from 0) in JSON text that
-// parses at least that far: a key is a string followed by ':'.
-size_t lineOfKey(std::string_view text, size_t n) {
-  size_t seen = 0, line = 1;
-  for (size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '\n') ++line;
-    if (text[i] != '"') continue;
-    const size_t keyLine = line;
-    for (++i; i < text.size() && text[i] != '"'; ++i) {
-      if (text[i] == '\\') ++i;
-    }
-    size_t j = i + 1;
-    while (j < text.size() && (text[j] == ' ' || text[j] == '\t' || text[j] == '\r' || text[j] == '\n')) ++j;
-    if (j < text.size() && text[j] == ':' && seen++ == n) return keyLine;
-  }
-  return line;
-}
-
-// Parses with two checks nlohmann's parser does not make: nesting deeper
-// than kMaxJsonDepth, and a key given twice in one object (the parser would
-// keep the last silently).
-Json parseJson(std::string_view text, const std::string& name) {
-  std::vector<std::unordered_map<std::string, size_t>> keysOfOpenObjects;
-  size_t keyCount = 0;
-  auto check = [&](int depth, Json::parse_event_t event, Json& parsed) {
-    switch (event) {
-      case Json::parse_event_t::object_start:
-      case Json::parse_event_t::array_start:
-        if (depth >= kMaxJsonDepth) {
-          throw Error(name + ": nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels (a scene needs 5)");
-        }
-        if (event == Json::parse_event_t::object_start) keysOfOpenObjects.emplace_back();
-        break;
-      case Json::parse_event_t::object_end:
-        keysOfOpenObjects.pop_back();
-        break;
-      case Json::parse_event_t::key: {
-        const size_t ordinal = keyCount++;
-        auto [it, inserted] = keysOfOpenObjects.back().try_emplace(parsed.get<std::string>(), ordinal);
-        if (!inserted) {
-          throw Error(name + ":" + std::to_string(lineOfKey(text, ordinal)) + ": key " + inQuotes(it->first) +
-                      " is given twice in one object (first on line " + std::to_string(lineOfKey(text, it->second)) +
-                      ")");
-        }
-        break;
-      }
-      default:
-        break;
-    }
-    return true;
-  };
-  try {
-    return Json::parse(text.begin(), text.end(), check);
-  } catch (const Json::out_of_range& e) {
-    // e.g. a number literal too large for a double ("1e999")
-    std::string what = e.what();
-    size_t bracket = what.find("] ");
-    throw Error(name + ": invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
-  } catch (const Json::parse_error& e) {
-    // nlohmann's message starts "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
-    std::string what = e.what();
-    size_t colon = what.find(": ");
-    std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
-    throw Error(name + ":" + lineAndColumn(text, e.byte) + ": invalid JSON: " + detail);
-  }
-}
 
 }  // namespace
 
 Scene loadSceneFromJson(std::string_view text, const std::string& name, const std::string& baseDir) {
-  return parseScene(Source{name, fs::path(baseDir)}, parseJson(text, name));
+  return parseScene(Source{name, fs::path(baseDir)}, json::parse(text, name));
 }
 
 Scene loadScene(const std::string& path) {
