@@ -15,16 +15,21 @@ source tools/packages.sh
 install_packages "${pathlab_hardening[@]}"
 
 step() { echo; echo "== $* ($(date +%T))"; }
-step "ASan + UBSan build"
-cmake --preset asan > /dev/null
-cmake --build --preset asan > build-asan/build.log 2>&1 || { tail -30 build-asan/build.log; exit 1; }
-step "ASan + UBSan tests"
-ctest --preset asan --parallel "$(nproc)"
-step "TSan build"
-cmake --preset tsan > /dev/null
-cmake --build --preset tsan > build-tsan/build.log 2>&1 || { tail -30 build-tsan/build.log; exit 1; }
-step "TSan tests"
-ctest --preset tsan --parallel "$(nproc)"
+# The workflow presets (CMakePresets.json) configure, build and test; the
+# build's output goes to a log shown only on failure.
+workflow() {
+  local log="build-$1.log"
+  if ! CTEST_PARALLEL_LEVEL="$(nproc)" cmake --workflow --preset "$1" > "$log" 2>&1; then
+    grep -E "Failed|\*\*\*|error:" "$log" | head -40 || true
+    tail -40 "$log"
+    exit 1
+  fi
+  sed -n '/^Test project/,$p' "$log" | grep -E "tests passed|Total Test time|Label Time|^ +Start|Passed|Failed" | tail -30
+}
+step "ASan + UBSan: build and tests (cmake --workflow --preset asan)"
+workflow asan
+step "TSan: build and tests (cmake --workflow --preset tsan)"
+workflow tsan
 step "TSan: the grader on the reference, tasks 1 and 5 (each test case in its own TSan process)"
 tools/grade solutions --tasks 1,5 --sanitize thread --build-dir build-tsan-grade \
   --out build-tsan-grade/results.json --fail-under 100 --timeout 300

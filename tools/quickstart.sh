@@ -5,15 +5,16 @@
 #   bash tools/quickstart.sh test     install, build, run every test (ctest)
 #
 # Installs the Debian packages PathLab builds with (only when one is
-# missing), configures build/ in Release mode and builds it.
+# missing), then configures and builds through the release preset.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 source tools/packages.sh
 
+# The release preset (CMakePresets.json): Ninja, Release, tests on.
 build() {
-  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPATHLAB_BUILD_TESTS=ON > /dev/null
-  cmake --build build --parallel "$(nproc)"
+  cmake --preset release > /dev/null
+  cmake --build --preset release --parallel "$(nproc)"
 }
 
 case "${1:-}" in
@@ -26,7 +27,7 @@ case "${1:-}" in
   test)
     install_packages "${pathlab_build[@]}" "${pathlab_test[@]}"
     build
-    ctest --test-dir build --output-on-failure --parallel "$(nproc)"
+    ctest --preset release --parallel "$(nproc)"
     ;;
   *)
     echo "usage: bash tools/quickstart.sh render|test" >&2

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pathlab/sampling.h"
+
 namespace pathlab {
 
 AreaLight AreaLight::fromMesh(const Scene& scene, uint32_t mesh) {
@@ -37,8 +39,7 @@ AreaSample AreaLight::sample(Vec2 u) const {
   result.pdfArea = 1.0f / area_;
   if (isSphere_) {
     const Sphere& s = scene_->spheres[object_];
-    const float z = 1.0f - 2.0f * u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;
-    result.normal = Vec3(r * std::cos(phi), r * std::sin(phi), z);
+    result.normal = uniformSphereDirection(u);
     result.point = s.center + s.radius * result.normal;
     return result;
   }
@@ -88,8 +89,7 @@ std::optional<EnvironmentLightSample> EnvironmentLight::sample(Vec2 u) const {
   } else {
     // A constant colour: uniform over the sphere (framework code, so tasks
     // 4-6 need nothing from task 7).
-    const float z = 1.0f - 2.0f * u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;
-    s.direction = Vec3(r * std::cos(phi), r * std::sin(phi), z);
+    s.direction = uniformSphereDirection(u);
     s.pdfSolidAngle = 1.0f / (4.0f * kPi);
   }
   if (!(s.pdfSolidAngle > 0.0f) || !isFinite(s.direction)) return std::nullopt;

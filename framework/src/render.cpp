@@ -31,15 +31,13 @@ const char* integratorName(Integrator integrator) {
 }
 
 Color traceRadiance(TraceContext& context, const RenderOptions& options, const Ray& ray, Sampler& sampler) {
-  if (options.integrator == Integrator::Path) {
-    return options.strategy.isRecipe() ? tracePath(context, ray, sampler)
-                                       : traceWithStrategy(context, ray, sampler, options.strategy);
-  }
   const Scene& scene = context.scene;
-  std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
   switch (options.integrator) {
-    case Integrator::Path: break;
+    case Integrator::Path:
+      return options.strategy.isRecipe() ? tracePath(context, ray, sampler)
+                                         : traceWithStrategy(context, ray, sampler, options.strategy);
     case Integrator::Direct: {
+      const std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
       if (!hit) return context.background(ray.direction);
       const Vec3 wo = -ray.direction;
       const Bsdf bsdf(scene.materials[hit->material], *hit, wo);
@@ -48,14 +46,16 @@ Color traceRadiance(TraceContext& context, const RenderOptions& options, const R
     case Integrator::Preview: {
       // An "eye light" at the camera: enough to recognise shapes and colours
       // before any light transport exists.
+      const std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
       if (!hit) return context.background(ray.direction);
       const Material& material = scene.materials[hit->material];
-      float cosine = std::abs(glm::dot(hit->shadingNormal, ray.direction));
+      const float cosine = std::abs(glm::dot(hit->shadingNormal, ray.direction));
       return material.albedo * cosine + material.emission;
     }
-    case Integrator::Normals:
-      if (!hit) return Color(0.0f);
-      return 0.5f * (hit->shadingNormal + Vec3(1.0f));
+    case Integrator::Normals: {
+      const std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
+      return hit ? 0.5f * (hit->shadingNormal + Vec3(1.0f)) : Color(0.0f);
+    }
   }
   return Color(0.0f);
 }

@@ -1,5 +1,6 @@
 #include "pathlab/scene_intersect.h"
 
+#include "pathlab/leaf_geometry.h"
 #include "pathlab/tasks/intersection.h"
 
 namespace pathlab {
@@ -9,17 +10,11 @@ std::optional<PrimitiveHit> intersectPrimitive(const Scene& scene, uint32_t prim
   const PrimitiveRef& ref = scene.primitives[primitive];
   if (ref.isSphere()) {
     const Sphere& sphere = scene.spheres[ref.index];
-    std::optional<float> t = intersectSphere(ray, range, sphere.center, sphere.radius);
-    if (!t || !range.contains(*t)) return std::nullopt;
-    return PrimitiveHit{*t, 0.0f, 0.0f, primitive};
+    return sphereHit(ray, range, sphere.center, sphere.radius, primitive);
   }
   const TriangleMesh& mesh = scene.meshes[ref.mesh];
   const glm::uvec3& v = mesh.triangles[ref.index];
-  std::optional<TriangleHit> hit =
-      intersectTriangle(ray, range, mesh.positions[v.x], mesh.positions[v.y], mesh.positions[v.z]);
-  // Guard against student code that returns hits outside the range.
-  if (!hit || !range.contains(hit->t)) return std::nullopt;
-  return PrimitiveHit{hit->t, hit->b1, hit->b2, primitive};
+  return triangleHit(ray, range, mesh.positions[v.x], mesh.positions[v.y], mesh.positions[v.z], primitive);
 }
 
 Hit surfaceHit(const Scene& scene, const Ray& ray, const PrimitiveHit& hit) {

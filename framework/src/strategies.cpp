@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pathlab/bsdf.h"
+#include "pathlab/sampling.h"
 #include "pathlab/tasks/direct_lighting.h"
 
 namespace pathlab {
@@ -84,10 +85,10 @@ Color directLighting(TraceContext& context, const Hit& hit, const Bsdf& bsdf, co
 
 // A diffuse bounce drawn uniformly over the hemisphere: p = 1 / (2 pi).
 std::optional<BsdfSample> sampleUniformHemisphere(const Bsdf& bsdf, const Vec3& wo, Vec2 u) {
-  const float z = u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;
-  if (!(z > 0.0f)) return std::nullopt;
+  const Vec3 local = uniformHemisphereDirection(u);
+  if (!(local.z > 0.0f)) return std::nullopt;
   BsdfSample s;
-  s.wi = glm::normalize(bsdf.frame().toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), z)));
+  s.wi = glm::normalize(bsdf.frame().toWorld(local));
   s.f = bsdf.f(wo, s.wi);
   s.pdf = 0.5f * kInvPi;
   return s;

@@ -57,7 +57,6 @@ class Accelerator {
   bool occluded(const Ray& ray, Interval range, TraversalStats* stats = nullptr) const;
 
   bool usesBvh() const { return usesBvh_; }
-  Traversal traversal() const { return traversal_; }
   const Bvh& bvh() const { return bvh_; }
   double buildSeconds() const { return buildSeconds_; }
 

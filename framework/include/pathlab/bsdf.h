@@ -18,9 +18,8 @@ class Bsdf {
  public:
   Bsdf(const Material& material, const Hit& hit, const Vec3& wo);
 
-  // Shading normal and geometric normal, both on the side of wo.
+  // The shading normal, on the side of wo.
   const Vec3& normal() const { return frame_.n; }
-  const Vec3& geometricNormal() const { return geometricNormal_; }
   const Frame& frame() const { return frame_; }
   bool isDelta() const { return material_.type != MaterialType::Diffuse; }
 

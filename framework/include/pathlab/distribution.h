@@ -20,7 +20,6 @@ class Distribution1D {
 
   size_t size() const { return cdf_.empty() ? 0 : cdf_.size() - 1; }
   double total() const { return total_; }
-  float probability(size_t i) const { return float(cdf_[i + 1] - cdf_[i]); }
 
   // The index i with cdf[i] <= u < cdf[i+1], and u re-scaled to [0, 1)
   // inside that interval so it can be used again.

@@ -69,7 +69,6 @@ class EnvironmentLight {
   std::optional<EnvironmentLightSample> sample(Vec2 u) const;
   float pdf(const Vec3& w) const;
   bool hasMap() const { return environment_->image.width > 0; }
-  const EnvironmentDistribution& distribution() const { return distribution_; }
 
  private:
   const Environment* environment_;

@@ -38,7 +38,6 @@ class Sampler {
     return {u, next1D()};
   }
 
-  uint32_t dimension() const { return dimension_; }
 
  private:
   uint64_t key_;

@@ -93,8 +93,6 @@ class ProgressiveRender {
 
   Image image() const;       // the mean of each pixel's samples so far
   RenderStats stats() const;  // so far
-  const Accelerator& accelerator() const { return accelerator_; }
-  const Lights& lights() const { return lights_; }
 
  private:
   const Scene& scene_;
