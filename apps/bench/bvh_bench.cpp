@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "pathlab/accelerator.h"
+#include "pathlab/task_wiring.h"
 #include "pathlab/error.h"
 #include "pathlab/fast_traversal.h"
 #include "pathlab/parallel.h"
@@ -201,7 +202,7 @@ int runBvhBench(const BvhBenchOptions& options) {
   const double buildTask = median(buildTimes);
   const std::string problem = validateBvh(bvh, scene.primitives.size(), &bounds);
   if (!problem.empty()) throw Error("the task-3 BVH (" + describeTasks(tasks, {3}) + ") is not valid: " + problem);
-  const LeafGeometry geometry(scene, bvh.primitives);
+  const LeafGeometry geometry(scene, bvh.primitives, kLinkedTasks.primitives);
 
   std::optional<double> buildEmbree;
 #ifdef PATHLAB_HAVE_EMBREE

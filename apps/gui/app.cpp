@@ -9,6 +9,7 @@
 #include "pathlab/error.h"
 #include "pathlab/progress.h"
 #include "pathlab/task_list.h"
+#include "pathlab/task_wiring.h"
 #include "pathlab/todo.h"
 
 namespace pathlab::gui {
@@ -167,7 +168,7 @@ void App::inspect(IVec2 pixel) {
   inspectionStale_ = false;
   if (!inspectionAccelerator_) {
     inspectionAccelerator_ = std::make_unique<const Accelerator>(base_);
-    inspectionLights_ = std::make_unique<const Lights>(Lights::fromScene(base_));
+    inspectionLights_ = std::make_unique<const Lights>(Lights::fromScene(base_, kLinkedTasks.environment));
   }
   RenderOptions renderOptions;
   renderOptions.integrator = kIntegrators[integrator_];

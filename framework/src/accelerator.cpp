@@ -7,6 +7,7 @@
 
 #include "pathlab/fast_traversal.h"
 #include "pathlab/scene_intersect.h"
+#include "pathlab/task_wiring.h"
 
 namespace pathlab {
 
@@ -141,7 +142,7 @@ Accelerator::Accelerator(const Scene& scene, Traversal traversal) : scene_(scene
     bvh_ = Bvh{};
     return;
   }
-  geometry_ = LeafGeometry(scene, bvh_.primitives);
+  geometry_ = LeafGeometry(scene, bvh_.primitives, kLinkedTasks.primitives);
   usesBvh_ = true;
 }
 

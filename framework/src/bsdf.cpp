@@ -2,13 +2,10 @@
 
 #include <cmath>
 
-#include "pathlab/tasks/direct_lighting.h"
-#include "pathlab/tasks/mirror_glass.h"
-#include "pathlab/tasks/path_tracing.h"
-
 namespace pathlab {
 
-Bsdf::Bsdf(const Material& material, const Hit& hit, const Vec3& wo) : material_(material) {
+Bsdf::Bsdf(const Material& material, const Hit& hit, const Vec3& wo, const BsdfLobes& lobes)
+    : material_(material), lobes_(&lobes) {
   // Two-sided: look at the surface from the side wo leaves from.
   const float side = glm::dot(hit.geometricNormal, wo) < 0.0f ? -1.0f : 1.0f;
   geometricNormal_ = side * hit.geometricNormal;
@@ -25,12 +22,12 @@ Color Bsdf::f(const Vec3& wo, const Vec3& wi) const {
   if (glm::dot(wi, frame_.n) <= 0.0f || glm::dot(wi, geometricNormal_) <= 0.0f || glm::dot(wo, frame_.n) <= 0.0f) {
     return Color(0.0f);
   }
-  return lambertianBrdf(material_.albedo);
+  return lobes_->lambertianBrdf(material_.albedo);
 }
 
 float Bsdf::pdf(const Vec3& /*wo*/, const Vec3& wi) const {
   if (isDelta()) return 0.0f;
-  return diffuseDirectionPdf(frame_.toLocal(wi));
+  return lobes_->diffuseDirectionPdf(frame_.toLocal(wi));
 }
 
 std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, Vec2 u) const {
@@ -39,8 +36,8 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, Vec2 u) const {
     const Frame& frame = material_.type == MaterialType::Glass ? outwardFrame_ : frame_;
     const Vec3 woLocal = frame.toLocal(wo);
     BsdfSample s = material_.type == MaterialType::Mirror
-                       ? sampleMirror(woLocal, material_.albedo)
-                       : sampleGlass(woLocal, material_.albedo, material_.transmittance, material_.ior, u.x);
+                       ? lobes_->sampleMirror(woLocal, material_.albedo)
+                       : lobes_->sampleGlass(woLocal, material_.albedo, material_.transmittance, material_.ior, u.x);
     // A grazing direction (cos theta = 0) carries no light, and its f (value / |cos|) is not finite.
     if (!(glm::dot(s.wi, s.wi) > 0.0f) || !isFinite(s.wi) || !(std::abs(s.wi.z) > 0.0f) || !isFinite(s.f)) {
       return std::nullopt;
@@ -49,8 +46,8 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, Vec2 u) const {
     s.isDelta = true;
     return s;
   }
-  const Vec3 local = sampleDiffuseDirection(u);
-  const float pdf = diffuseDirectionPdf(local);
+  const Vec3 local = lobes_->sampleDiffuseDirection(u);
+  const float pdf = lobes_->diffuseDirectionPdf(local);
   if (!(pdf > 0.0f) || !(local.z > 0.0f)) return std::nullopt;
   BsdfSample s;
   s.wi = glm::normalize(frame_.toWorld(local));

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "pathlab/bsdf.h"
+#include "pathlab/task_wiring.h"
 
 namespace pathlab {
 namespace {
@@ -59,7 +60,7 @@ std::vector<std::string> describeRays(const Scene& scene, const std::vector<Trac
       if (lastHit) {
         const Hit& from = lastHit->record;
         const Vec3 wo = -lastHit->ray.direction;
-        const Bsdf bsdf(scene.materials[from.material], from, wo);
+        const Bsdf bsdf(scene.materials[from.material], from, wo, kLinkedTasks.lobes);
         if (bsdf.isDelta()) {
           line += " (delta lobe)";
         } else {
@@ -83,7 +84,7 @@ PixelInspection inspectPixel(const Scene& scene, const Accelerator& accelerator,
   PixelInspection inspection;
   inspection.pixel = pixel;
   const CameraBasis basis = cameraBasis(scene.camera);
-  TraceContext context(scene, accelerator, lights);
+  TraceContext context(scene, accelerator, lights, kLinkedTasks.lobes);
   context.pixel = pixel;
   Color sum(0.0f);
   for (int s = 0; s < samples; ++s) {

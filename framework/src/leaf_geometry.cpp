@@ -2,7 +2,8 @@
 
 namespace pathlab {
 
-LeafGeometry::LeafGeometry(const Scene& scene, std::span<const uint32_t> order) {
+LeafGeometry::LeafGeometry(const Scene& scene, std::span<const uint32_t> order, const PrimitiveTests& tests)
+    : tests_(tests) {
   slots_.reserve(order.size());
   for (uint32_t primitive : order) {
     const PrimitiveRef& ref = scene.primitives[primitive];

@@ -7,6 +7,7 @@
 
 #include "pathlab/parallel.h"
 #include "pathlab/progress.h"
+#include "pathlab/task_wiring.h"
 #include "pathlab/tasks/direct_lighting.h"
 #include "pathlab/tasks/path_tracing.h"
 
@@ -40,7 +41,7 @@ Color traceRadiance(TraceContext& context, const RenderOptions& options, const R
       const std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
       if (!hit) return context.background(ray.direction);
       const Vec3 wo = -ray.direction;
-      const Bsdf bsdf(scene.materials[hit->material], *hit, wo);
+      const Bsdf bsdf = context.bsdf(*hit, wo);
       return emittedRadiance(scene, *hit, wo) + estimateDirectLighting(context, *hit, bsdf, wo, sampler);
     }
     case Integrator::Preview: {
@@ -75,7 +76,7 @@ ProgressiveRender::ProgressiveRender(const Scene& scene, const RenderOptions& op
       options_(options),
       basis_(cameraBasis(scene.camera)),
       accelerator_(scene, options.traversal),
-      lights_(Lights::fromScene(scene, options.environmentSampling)),
+      lights_(Lights::fromScene(scene, kLinkedTasks.environment, options.environmentSampling)),
       start_(std::chrono::steady_clock::now()),
       sum_(size_t(scene.render.width) * size_t(scene.render.height), Color(0.0f)),
       count_(sum_.size(), 0),
@@ -94,7 +95,7 @@ bool ProgressiveRender::step() {
   const int passBegin = passBegin_;
   const int passEnd = std::min(scene_.render.samplesPerPixel, passBegin + passSize_);
   forEachTile(width, height, options_.tileSize, options_.threads, [&](const Tile& tile) {
-    TraceContext context(scene_, accelerator_, lights_);
+    TraceContext context(scene_, accelerator_, lights_, kLinkedTasks.lobes);
     uint64_t tileSamples = 0;
     for (int y = tile.begin.y; y < tile.end.y; ++y) {
       for (int x = tile.begin.x; x < tile.end.x; ++x) {

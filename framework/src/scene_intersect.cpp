@@ -1,6 +1,7 @@
 #include "pathlab/scene_intersect.h"
 
 #include "pathlab/leaf_geometry.h"
+#include "pathlab/task_wiring.h"
 #include "pathlab/tasks/intersection.h"
 
 namespace pathlab {
@@ -10,11 +11,11 @@ std::optional<PrimitiveHit> intersectPrimitive(const Scene& scene, uint32_t prim
   const PrimitiveRef& ref = scene.primitives[primitive];
   if (ref.isSphere()) {
     const Sphere& sphere = scene.spheres[ref.index];
-    return sphereHit(ray, range, sphere.center, sphere.radius, primitive);
+    return sphereHit(kLinkedTasks.primitives, ray, range, sphere.center, sphere.radius, primitive);
   }
   const TriangleMesh& mesh = scene.meshes[ref.mesh];
   const glm::uvec3& v = mesh.triangles[ref.index];
-  return triangleHit(ray, range, mesh.positions[v.x], mesh.positions[v.y], mesh.positions[v.z], primitive);
+  return triangleHit(kLinkedTasks.primitives, ray, range, mesh.positions[v.x], mesh.positions[v.y], mesh.positions[v.z], primitive);
 }
 
 Hit surfaceHit(const Scene& scene, const Ray& ray, const PrimitiveHit& hit) {

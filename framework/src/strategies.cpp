@@ -138,7 +138,7 @@ Color traceWithStrategy(TraceContext& context, Ray ray, Sampler& sampler, const 
     }
     if (bounce >= context.settings.maxDepth) break;
 
-    const Bsdf bsdf(scene.materials[hit->material], *hit, wo);
+    const Bsdf bsdf = context.bsdf(*hit, wo);
     if (nee) radiance += throughput * directLighting(context, *hit, bsdf, wo, sampler, mis);
 
     const std::optional<BsdfSample> sample = strategy.cosineSampling || bsdf.isDelta()

@@ -4,14 +4,14 @@ namespace pathlab {
 
 std::optional<Hit> TraceContext::intersect(const Ray& ray, Interval range) {
   ++rays;
-  std::optional<Hit> hit = accelerator.intersect(ray, range);
+  std::optional<Hit> hit = queries.closestHit(ray, range);
   if (log) log->push_back({ray, range, false, hit.has_value(), hit.value_or(Hit{})});
   return hit;
 }
 
 bool TraceContext::occluded(const Ray& ray, Interval range) {
   ++rays;
-  const bool blocked = accelerator.occluded(ray, range);
+  const bool blocked = queries.anyHit(ray, range);
   if (log) log->push_back({ray, range, true, blocked, Hit{}});
   return blocked;
 }

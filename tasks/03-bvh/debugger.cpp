@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pathlab/accelerator.h"
+#include "pathlab/task_wiring.h"
 #include "pathlab/debug_views.h"
 #include "pathlab/draw.h"
 #include "pathlab/parallel.h"
@@ -117,7 +118,7 @@ DebugOutput traversalView(const DebugViewRequest& request) {
     if (node.isLeaf())
       for (uint32_t k = 0; k < node.count; ++k) leafOfSlot[node.leftOrFirst + k] = i;
   }
-  LeafGeometry geometry(scene, bvh.primitives);
+  LeafGeometry geometry(scene, bvh.primitives, kLinkedTasks.primitives);
   std::vector<uint32_t> tested;
   geometry.recordTests(&tested);
   TraversalStats stats;

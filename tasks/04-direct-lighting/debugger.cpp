@@ -11,6 +11,7 @@
 #include "pathlab/draw.h"
 #include "pathlab/inspect.h"
 #include "pathlab/render.h"
+#include "pathlab/task_wiring.h"
 
 namespace pathlab {
 namespace {
@@ -48,7 +49,7 @@ DebugOutput shadowRaysView(const DebugViewRequest& request) {
   // Re-trace the pixel with the render's random numbers, recording its rays.
   const IVec2 pixel = request.inspectedPixel();
   const Accelerator accelerator(scene);
-  const Lights lights = Lights::fromScene(scene);
+  const Lights lights = Lights::fromScene(scene, kLinkedTasks.environment);
   RenderOptions options;
   options.integrator = Integrator::Direct;
   const int samples = std::min(scene.render.samplesPerPixel, 16);

@@ -18,6 +18,7 @@
 #include "pathlab/draw.h"
 #include "pathlab/inspect.h"
 #include "pathlab/render.h"
+#include "pathlab/task_wiring.h"
 
 namespace pathlab {
 namespace {
@@ -71,7 +72,7 @@ DebugOutput pathsView(const DebugViewRequest& request) {
   scene.render.width = request.width;
   scene.render.height = request.height;
   const Accelerator accelerator(scene);
-  const Lights lights = Lights::fromScene(scene);
+  const Lights lights = Lights::fromScene(scene, kLinkedTasks.environment);
   Image image = scenePreview(request, accelerator, 0.3f);
   const int samples = std::min(scene.render.samplesPerPixel, 8);
   const PixelInspection inspection =

@@ -66,7 +66,7 @@ float diffuseDirectionPdf(const Vec3& wi) {
 //      previous vertex.
 //   3. If bounce >= context.settings.maxDepth, stop: -m counts bounces, so
 //      -m 0 shows only emitters and -m 1 is direct lighting.
-//   4. Bsdf bsdf(material, hit, wo); add throughput * estimateDirectLighting(...).
+//   4. bsdf = context.bsdf(hit, wo); add throughput * estimateDirectLighting(...).
 //   5. Sample the next direction: s = bsdf.sample(wo, sampler.next2D()); stop if
 //      there is none or s->pdf is 0. throughput *= s->f * |cos| / s->pdf,
 //      cos = dot(s->wi, bsdf.normal()) (for every lobe: a mirror's f holds

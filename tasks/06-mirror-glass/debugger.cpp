@@ -16,6 +16,7 @@
 #include "pathlab/debug_views.h"
 #include "pathlab/draw.h"
 #include "pathlab/random.h"
+#include "pathlab/task_wiring.h"
 #include "pathlab/tasks/camera_rays.h"
 
 namespace pathlab {
@@ -44,7 +45,7 @@ DebugOutput lobeView(const DebugViewRequest& request) {
 
   const Material& material = scene.materials[hit->material];
   const Vec3 wo = -ray.direction;
-  const Bsdf bsdf(material, *hit, wo);
+  const Bsdf bsdf(material, *hit, wo, kLinkedTasks.lobes);
   constexpr int kSamples = 200000;
   std::vector<double> sampled(kPhiCells * kCosCells, 0.0), predicted(kPhiCells * kCosCells, 0.0);
   std::map<int, double> pointMass;  // delta lobes: cell -> probability

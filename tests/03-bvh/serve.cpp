@@ -2,6 +2,7 @@
 #include "../remote/server.h"
 #include "../remote/serve_images.h"
 #include "calls.h"
+#include "pathlab/task_wiring.h"
 
 namespace pathlab::remote {
 
@@ -11,7 +12,7 @@ void registerCalls(Server& server) {
   server.serve<calls::BuildBvh>([](const std::vector<Aabb>& bounds) { return buildBvh(bounds); });
   server.serve<calls::IntersectClosest>(
       [](const Bvh& bvh, const Scene& scene, const std::vector<calls::RayInRange>& rays) {
-        const LeafGeometry geometry(scene, bvh.primitives);
+        const LeafGeometry geometry(scene, bvh.primitives, kLinkedTasks.primitives);
         std::vector<calls::ClosestResult> results;
         for (const auto& [ray, range] : rays) {
           TraversalStats stats;
@@ -21,7 +22,7 @@ void registerCalls(Server& server) {
         return results;
       });
   server.serve<calls::IntersectAny>([](const Bvh& bvh, const Scene& scene, const std::vector<calls::RayInRange>& rays) {
-    const LeafGeometry geometry(scene, bvh.primitives);
+    const LeafGeometry geometry(scene, bvh.primitives, kLinkedTasks.primitives);
     std::vector<calls::AnyResult> results;
     for (const auto& [ray, range] : rays) {
       TraversalStats stats;

@@ -92,7 +92,8 @@ TEST_CASE("T5.1 diffuse sampling: f cos(theta) / pdf averages to the albedo (ene
   Hit hit;
   hit.geometricNormal = hit.shadingNormal = glm::normalize(Vec3(0.2f, 0.9f, -0.3f));
   const Vec3 wo = glm::normalize(Vec3(0.5f, 1.0f, 0.1f));
-  const Bsdf bsdf(scene.materials[0], hit, wo);  // the judge's, for its normal only
+  const BsdfLobes noTaskCode;  // the judge's Bsdf, for its normal only
+  const Bsdf bsdf(scene.materials[0], hit, wo, noTaskCode);
   std::vector<Vec2> us;
   for (int i = 0; i < 100000; ++i) us.push_back(Sampler(uint32_t(i), 0, testSeed(22)).next2D());
   MeanEstimate weight;

@@ -171,7 +171,8 @@ TEST_CASE("T6.4 mirror: a delta lobe — wi = reflect(wo), weight = reflectance,
   Material mirror;
   mirror.type = MaterialType::Mirror;
   Hit hit;
-  const Bsdf bsdf(mirror, hit, Vec3(0, 0, 1));
+  const BsdfLobes noTaskCode;  // a delta lobe's f and pdf call no task function
+  const Bsdf bsdf(mirror, hit, Vec3(0, 0, 1), noTaskCode);
   CHECK(bsdf.isDelta());
   CHECK(bsdf.f(Vec3(0, 0, 1), glm::normalize(Vec3(0.3f, 0, 1))) == Color(0.0f));
   CHECK(bsdf.pdf(Vec3(0, 0, 1), glm::normalize(Vec3(0.3f, 0, 1))) == 0.0f);

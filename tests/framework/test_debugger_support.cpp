@@ -12,6 +12,7 @@
 #include "pathlab/inspect.h"
 #include "pathlab/render.h"
 #include "pathlab/scene_io.h"
+#include "pathlab/task_wiring.h"
 
 using namespace pathlab;
 
@@ -78,7 +79,7 @@ TEST_CASE("inspector: re-traced samples are the render's samples, with every ray
   options.progress = false;
   const Image image = render(scene, options).image;
   const Accelerator accelerator(scene);
-  const Lights lights = Lights::fromScene(scene);
+  const Lights lights = Lights::fromScene(scene, kLinkedTasks.environment);
   for (IVec2 pixel : {IVec2(24, 20), IVec2(3, 30), IVec2(40, 5)}) {
     CAPTURE(pixel);
     const PixelInspection inspection = inspectPixel(scene, accelerator, lights, options, pixel, 8);
@@ -112,7 +113,7 @@ TEST_CASE("inspector: NaN samples are flagged") {
     return context.pixel.x == 5 ? Color(std::nanf("")) : Color(1.0f);
   };
   const Accelerator accelerator(scene);
-  const Lights lights = Lights::fromScene(scene);
+  const Lights lights = Lights::fromScene(scene, kLinkedTasks.environment);
   const PixelInspection bad = inspectPixel(scene, accelerator, lights, options, IVec2(5, 5), 4);
   CHECK(bad.nonFinite == 4);
   CHECK(formatInspection(bad).find("NaN/Inf") != std::string::npos);

@@ -6,6 +6,7 @@
 #include "pathlab/lights.h"
 #include "pathlab/random.h"
 #include "pathlab/scene_io.h"
+#include "pathlab/task_wiring.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size < 1) return 0;
@@ -14,7 +15,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {
     const pathlab::Scene scene =
         pathlab::loadSceneFromJson("{\"environment\": {\"image\": \"" + path + "\"}}", "fuzz.json", "/");
-    const pathlab::Lights lights = pathlab::Lights::fromScene(scene);
+    const pathlab::Lights lights = pathlab::Lights::fromScene(scene, pathlab::kLinkedTasks.environment);
     if (lights.environment) {
       for (uint32_t i = 0; i < 16; ++i) {
         pathlab::Sampler sampler(i, 0, 1);

@@ -3,6 +3,7 @@
 
 #include "../support/render_support.h"
 #include "pathlab/random.h"
+#include "pathlab/task_wiring.h"
 #include "pathlab/tasks/direct_lighting.h"
 #include "pathlab/tasks/path_tracing.h"
 #include "server.h"
@@ -21,7 +22,7 @@ inline void serveTraceCalls(Server& server) {
         TraceContext context = contextFor(rig, settings);
         std::vector<Color> estimates;
         for (const auto& [hit, wo, pixel, seed] : queries) {
-          const Bsdf bsdf(rig.scene().materials.at(hit.material), hit, wo);
+          const Bsdf bsdf(rig.scene().materials.at(hit.material), hit, wo, kLinkedTasks.lobes);
           Sampler sampler(pixel, 0, seed);
           estimates.push_back(estimateDirectLighting(context, hit, bsdf, wo, sampler));
         }
@@ -40,7 +41,7 @@ inline void serveTraceCalls(Server& server) {
       });
   server.serve<calls::BsdfSamples>(
       [](const Material& material, const Hit& hit, const Vec3& wo, const std::vector<Vec2>& us) {
-        const Bsdf bsdf(material, hit, wo);
+        const Bsdf bsdf(material, hit, wo, kLinkedTasks.lobes);
         std::vector<std::optional<BsdfSample>> samples;
         for (const Vec2& u : us) samples.push_back(bsdf.sample(wo, u));
         return samples;

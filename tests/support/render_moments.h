@@ -12,6 +12,7 @@
 
 #include "pathlab/parallel.h"
 #include "pathlab/render.h"
+#include "pathlab/task_wiring.h"
 
 namespace pathlab::test {
 
@@ -36,7 +37,7 @@ inline PixelMoments renderMoments(const Scene& scene, const ImageOptions& imageO
   options.environmentSampling = imageOptions.environmentSampling;
   options.progress = false;
   const Accelerator accelerator(scene);
-  const Lights lights = Lights::fromScene(scene, options.environmentSampling);
+  const Lights lights = Lights::fromScene(scene, kLinkedTasks.environment, options.environmentSampling);
   const CameraBasis basis = cameraBasis(scene.camera);
 
   PixelMoments m;
@@ -50,7 +51,7 @@ inline PixelMoments renderMoments(const Scene& scene, const ImageOptions& imageO
   if (!m.usedBvh && !scene.primitives.empty()) return m;
   std::atomic<uint64_t> nonFinite{0};
   forEachTile(m.width, m.height, 8, threads, [&](const Tile& tile) {
-    TraceContext context(scene, accelerator, lights);
+    TraceContext context(scene, accelerator, lights, kLinkedTasks.lobes);
     for (int y = tile.begin.y; y < tile.end.y; ++y) {
       for (int x = tile.begin.x; x < tile.end.x; ++x) {
         context.pixel = {x, y};

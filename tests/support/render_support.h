@@ -6,6 +6,7 @@
 
 #include "pathlab/accelerator.h"
 #include "pathlab/lights.h"
+#include "pathlab/task_wiring.h"
 #include "pathlab/trace.h"
 
 namespace pathlab::test {
@@ -15,11 +16,11 @@ class Rig {
   explicit Rig(Scene scene) : scene_(std::make_unique<Scene>(std::move(scene))) {
     scene_->indexPrimitives();
     accelerator_ = std::make_unique<Accelerator>(*scene_);
-    lights_ = Lights::fromScene(*scene_);
+    lights_ = Lights::fromScene(*scene_, kLinkedTasks.environment);
   }
 
   TraceContext context(int maxDepth = 4, int lightSamples = 1) const {
-    TraceContext c(*scene_, *accelerator_, lights_);
+    TraceContext c(*scene_, *accelerator_, lights_, kLinkedTasks.lobes);
     c.settings.maxDepth = maxDepth;
     c.settings.lightSamples = lightSamples;
     return c;

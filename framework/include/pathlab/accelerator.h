@@ -11,6 +11,7 @@
 #include "pathlab/leaf_geometry.h"
 #include "pathlab/scene.h"
 #include "pathlab/tasks/bvh.h"
+#include "pathlab/trace.h"
 
 namespace pathlab {
 
@@ -49,12 +50,16 @@ const char* traversalName(Traversal traversal);
 // is the reference.
 Traversal defaultTraversal(const std::string& taskSummary);
 
-class Accelerator {
+class Accelerator final : public RayQueries {
  public:
   explicit Accelerator(const Scene& scene, Traversal traversal = Traversal::Task3);
 
   std::optional<Hit> intersect(const Ray& ray, Interval range, TraversalStats* stats = nullptr) const;
   bool occluded(const Ray& ray, Interval range, TraversalStats* stats = nullptr) const;
+
+  // RayQueries, for TraceContext.
+  std::optional<Hit> closestHit(const Ray& ray, Interval range) const override { return intersect(ray, range); }
+  bool anyHit(const Ray& ray, Interval range) const override { return occluded(ray, range); }
 
   bool usesBvh() const { return usesBvh_; }
   const Bvh& bvh() const { return bvh_; }

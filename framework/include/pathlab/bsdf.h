@@ -2,7 +2,9 @@
 // Surfaces are two-sided: the frame's normal is flipped to the side wo
 // leaves from. The diffuse lobe is built from task 4 (f) and task 5
 // (direction sampling); mirror and glass from task 6 (delta lobes: sampled,
-// never evaluated — f() and pdf() are 0 for them).
+// never evaluated — f() and pdf() are 0 for them). The task functions come
+// in a BsdfLobes table (task_functions.h); estimators get their Bsdf from
+// TraceContext::bsdf, which passes the linked tasks' table.
 #pragma once
 
 #include <optional>
@@ -11,12 +13,13 @@
 #include "pathlab/frame.h"
 #include "pathlab/hit.h"
 #include "pathlab/scene.h"
+#include "pathlab/task_functions.h"
 
 namespace pathlab {
 
 class Bsdf {
  public:
-  Bsdf(const Material& material, const Hit& hit, const Vec3& wo);
+  Bsdf(const Material& material, const Hit& hit, const Vec3& wo, const BsdfLobes& lobes);
 
   // The shading normal, on the side of wo.
   const Vec3& normal() const { return frame_.n; }
@@ -32,6 +35,7 @@ class Bsdf {
 
  private:
   const Material& material_;
+  const BsdfLobes* lobes_;
   Frame frame_;
   Frame outwardFrame_;
   Vec3 geometricNormal_;

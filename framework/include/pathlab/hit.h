@@ -7,6 +7,14 @@
 
 namespace pathlab {
 
+// Where a ray meets a triangle (task 2): the ray parameter and the
+// barycentric weights of p1 and p2 (p0's weight is 1 - b1 - b2).
+struct TriangleHit {
+  float t = kInfinity;
+  float b1 = 0.0f;
+  float b2 = 0.0f;
+};
+
 // Where a ray meets one primitive: its parameter, the barycentrics of p1 and
 // p2 for triangles (0 for spheres), and the primitive's index in the scene.
 struct PrimitiveHit {

@@ -1,6 +1,8 @@
 // The geometry of every primitive copied into one flat array, in the order
 // of a BVH's leaves, so a leaf's primitives sit next to each other in memory.
 // A traversal tests "slot" i of a leaf; the hit names the scene primitive.
+// The tests themselves are task 2's, handed in as a PrimitiveTests table
+// (task_functions.h), so this core type depends on no task.
 #pragma once
 
 #include <optional>
@@ -10,23 +12,24 @@
 #include "pathlab/aabb.h"
 #include "pathlab/hit.h"
 #include "pathlab/scene.h"
-#include "pathlab/tasks/intersection.h"
+#include "pathlab/task_functions.h"
 
 namespace pathlab {
 
 // Task 2's tests as the framework calls them (the leaves here, brute force in
 // scene_intersect.cpp): the hit of scene primitive `primitive`, and never an
 // answer outside `range`, whatever the task code returned.
-inline std::optional<PrimitiveHit> sphereHit(const Ray& ray, Interval range, const Point3& center, float radius,
-                                             uint32_t primitive) {
-  const std::optional<float> t = intersectSphere(ray, range, center, radius);
+inline std::optional<PrimitiveHit> sphereHit(const PrimitiveTests& tests, const Ray& ray, Interval range,
+                                             const Point3& center, float radius, uint32_t primitive) {
+  const std::optional<float> t = tests.intersectSphere(ray, range, center, radius);
   if (!t || !range.contains(*t)) return std::nullopt;
   return PrimitiveHit{*t, 0.0f, 0.0f, primitive};
 }
 
-inline std::optional<PrimitiveHit> triangleHit(const Ray& ray, Interval range, const Point3& p0, const Point3& p1,
-                                               const Point3& p2, uint32_t primitive) {
-  const std::optional<TriangleHit> hit = intersectTriangle(ray, range, p0, p1, p2);
+inline std::optional<PrimitiveHit> triangleHit(const PrimitiveTests& tests, const Ray& ray, Interval range,
+                                               const Point3& p0, const Point3& p1, const Point3& p2,
+                                               uint32_t primitive) {
+  const std::optional<TriangleHit> hit = tests.intersectTriangle(ray, range, p0, p1, p2);
   if (!hit || !range.contains(hit->t)) return std::nullopt;
   return PrimitiveHit{hit->t, hit->b1, hit->b2, primitive};
 }
@@ -34,8 +37,8 @@ inline std::optional<PrimitiveHit> triangleHit(const Ray& ray, Interval range, c
 class LeafGeometry {
  public:
   LeafGeometry() = default;
-  // Slot i holds scene primitive order[i].
-  LeafGeometry(const Scene& scene, std::span<const uint32_t> order);
+  // Slot i holds scene primitive order[i]; `tests` are task 2's (kLinkedTasks.primitives).
+  LeafGeometry(const Scene& scene, std::span<const uint32_t> order, const PrimitiveTests& tests);
 
   uint32_t size() const { return uint32_t(slots_.size()); }
 
@@ -47,8 +50,8 @@ class LeafGeometry {
   std::optional<PrimitiveHit> intersect(uint32_t slot, const Ray& ray, Interval range) const {
     if (testLog_) [[unlikely]] testLog_->push_back(slot);
     const Slot& s = slots_[slot];
-    return s.isSphere ? sphereHit(ray, range, s.a, s.b.x, s.primitive)
-                      : triangleHit(ray, range, s.a, s.b, s.c, s.primitive);
+    return s.isSphere ? sphereHit(tests_, ray, range, s.a, s.b.x, s.primitive)
+                      : triangleHit(tests_, ray, range, s.a, s.b, s.c, s.primitive);
   }
 
  private:
@@ -63,6 +66,7 @@ class LeafGeometry {
   };
   static_assert(sizeof(Slot) == 48);
   std::vector<Slot> slots_;
+  PrimitiveTests tests_;
   std::vector<uint32_t>* testLog_ = nullptr;
 };
 

@@ -8,9 +8,10 @@
 #include <vector>
 
 #include "pathlab/distribution.h"
+#include "pathlab/environment_distribution.h"
 #include "pathlab/hit.h"
 #include "pathlab/scene.h"
-#include "pathlab/tasks/environment.h"
+#include "pathlab/task_functions.h"
 
 namespace pathlab {
 
@@ -52,7 +53,8 @@ struct EnvironmentLightSample {
 
 // The environment as a light at infinity: a constant colour (sampled
 // uniformly over the sphere) or an equirectangular map (task 7: lookup, and
-// importance sampling by luminance * sin(theta), or uniform sampling).
+// importance sampling by luminance * sin(theta), or uniform sampling; its
+// functions come in an EnvironmentMapFunctions table, task_functions.h).
 //
 // Lighting (next-event estimation) uses the map's pixels as they are —
 // piecewise constant, exactly the function the importance sampler's pdf
@@ -60,7 +62,7 @@ struct EnvironmentLightSample {
 // of the sky is the bilinear lookup: the same pixels, filtered for display.
 class EnvironmentLight {
  public:
-  EnvironmentLight(const Environment& environment, EnvironmentSampling sampling);
+  EnvironmentLight(const Environment& environment, EnvironmentSampling sampling, const EnvironmentMapFunctions& map);
 
   // Radiance seen along the unit direction w (bilinear for maps).
   Color radiance(const Vec3& w) const;
@@ -73,6 +75,7 @@ class EnvironmentLight {
  private:
   const Environment* environment_;
   EnvironmentSampling sampling_;
+  EnvironmentMapFunctions map_;
   EnvironmentDistribution distribution_;  // built only for importance-sampled maps
 };
 
@@ -81,7 +84,9 @@ struct Lights {
   std::vector<AreaLight> areas;
   std::optional<EnvironmentLight> environment;  // only when the scene has one
 
-  static Lights fromScene(const Scene& scene, EnvironmentSampling sampling = EnvironmentSampling::Importance);
+  // `map` is task 7's functions (kLinkedTasks.environment, task_wiring.h).
+  static Lights fromScene(const Scene& scene, const EnvironmentMapFunctions& map,
+                          EnvironmentSampling sampling = EnvironmentSampling::Importance);
 
   // The area light whose surface `hit` lies on, or null.
   const AreaLight* areaLightAt(const Scene& scene, const Hit& hit) const;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "pathlab/accelerator.h"
 #include "pathlab/image.h"
 #include "pathlab/random.h"
 #include "pathlab/ray.h"

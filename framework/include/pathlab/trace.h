@@ -1,16 +1,21 @@
-// What an estimator needs while tracing one sample: the scene, its BVH and
-// lights, the render settings, and per-thread state (pixel, counters, log).
-// Estimators trace rays through intersect() and occluded() so rays are
-// counted (rays/s) and, in the debugger, recorded.
+// What an estimator needs while tracing one sample: the scene, ray queries
+// against it, its lights, BSDFs, the render settings, and per-thread state
+// (pixel, counters, log). Estimators trace rays through intersect() and
+// occluded() so rays are counted (rays/s) and, in the debugger, recorded.
+// Core: the ray queries are an interface the render layer's Accelerator
+// answers (task 3's tree), and BSDFs get the lobes the render layer passes.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
-#include "pathlab/accelerator.h"
+#include "pathlab/bsdf.h"
+#include "pathlab/hit.h"
 #include "pathlab/lights.h"
+#include "pathlab/ray.h"
 #include "pathlab/scene.h"
+#include "pathlab/task_functions.h"
 
 namespace pathlab {
 
@@ -23,10 +28,21 @@ struct TracedRay {
   Hit record;           // the closest hit (not for shadow rays); record.t is kInfinity on a miss
 };
 
+// Closest-hit and any-hit queries against a whole scene (Accelerator).
+class RayQueries {
+ public:
+  virtual std::optional<Hit> closestHit(const Ray& ray, Interval range) const = 0;
+  virtual bool anyHit(const Ray& ray, Interval range) const = 0;
+
+ protected:
+  ~RayQueries() = default;
+};
+
 struct TraceContext {
   const Scene& scene;
-  const Accelerator& accelerator;
+  const RayQueries& queries;
   const Lights& lights;
+  const BsdfLobes& lobes;  // tasks 4-6 (kLinkedTasks.lobes, task_wiring.h)
   // The render settings: -l (settings.lightSamples, samples per area light)
   // and -m (settings.maxDepth, the most bounces a path may make). A copy of
   // scene.render that a test or a debugger view may change.
@@ -37,8 +53,8 @@ struct TraceContext {
   uint64_t rays = 0;            // rays traced by this thread
   std::vector<TracedRay>* log = nullptr;  // when set, every ray is recorded
 
-  TraceContext(const Scene& s, const Accelerator& a, const Lights& l)
-      : scene(s), accelerator(a), lights(l), settings(s.render) {}
+  TraceContext(const Scene& s, const RayQueries& q, const Lights& l, const BsdfLobes& b)
+      : scene(s), queries(q), lights(l), lobes(b), settings(s.render) {}
 
   // Closest hit within range.
   std::optional<Hit> intersect(const Ray& ray, Interval range);
@@ -46,6 +62,8 @@ struct TraceContext {
   bool occluded(const Ray& ray, Interval range);
   // Radiance arriving along a ray that leaves the scene.
   Color background(const Vec3& direction) const;
+  // The BSDF at `hit` seen from direction wo (unit, pointing away from the surface).
+  Bsdf bsdf(const Hit& hit, const Vec3& wo) const { return Bsdf(scene.materials[hit.material], hit, wo, lobes); }
 };
 
 }  // namespace pathlab

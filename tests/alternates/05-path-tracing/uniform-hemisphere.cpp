@@ -40,7 +40,7 @@ Color tracePath(TraceContext& context, Ray ray, Sampler& sampler) {
     if (bounce >= context.settings.maxDepth) break;
 
     // 4. Next-event estimation.
-    const Bsdf bsdf(scene.materials[hit->material], *hit, wo);
+    const Bsdf bsdf = context.bsdf(*hit, wo);
     radiance += throughput * estimateDirectLighting(context, *hit, bsdf, wo, sampler);
 
     // 5. The next direction.

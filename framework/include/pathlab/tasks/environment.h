@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "pathlab/environment_distribution.h"
 #include "pathlab/image.h"
 #include "pathlab/math.h"
 
@@ -27,23 +28,11 @@ Color lookupEnvironment(const Image& map, const Vec3& direction);
 // T7.3: a uniformly distributed direction on the unit sphere (pdf 1 / (4 pi)).
 Vec3 sampleUniformSphere(Vec2 u);
 
-// The 2D distribution for importance sampling a map: the weight of pixel
-// (i, j) is luminance(i, j) * sin(theta_j), theta_j at the row's centre.
-struct EnvironmentDistribution {
-  int width = 0;
-  int height = 0;
-  std::vector<float> marginalCdf;     // height + 1 entries: 0, ..., 1 over rows
-  std::vector<float> conditionalCdf;  // height rows of width + 1 entries: 0, ..., 1 within the row
-  double totalWeight = 0.0;           // sum of all weights; 0 for a black map
-};
+// EnvironmentDistribution (the map's marginal and conditional CDFs) and
+// EnvironmentSample are core data: pathlab/environment_distribution.h.
 
 // T7.4: the distribution of `map`.
 EnvironmentDistribution buildEnvironmentDistribution(const Image& map);
-
-struct EnvironmentSample {
-  Vec3 direction{0.0f};
-  float pdfSolidAngle = 0.0f;
-};
 
 // T7.5: a direction drawn from the distribution with u in [0,1)^2 (rows by
 // the marginal CDF, then a column by the row's CDF, both by binary search,

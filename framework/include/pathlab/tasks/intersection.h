@@ -4,18 +4,14 @@
 
 #include <optional>
 
+#include "pathlab/hit.h"
 #include "pathlab/math.h"
 #include "pathlab/ray.h"
 
 namespace pathlab {
 
-// Where a ray meets a triangle: the ray parameter and the barycentric weights
-// of p1 and p2 (p0's weight is 1 - b1 - b2).
-struct TriangleHit {
-  float t = kInfinity;
-  float b1 = 0.0f;
-  float b2 = 0.0f;
-};
+// TriangleHit (the ray parameter and the barycentrics b1, b2 of a triangle
+// hit) is core data: pathlab/hit.h.
 
 // T2.1: the hit of `ray` with triangle (p0, p1, p2) for t in `range`, or nothing.
 // Watertight: a ray through an edge or vertex shared by two triangles hits at
