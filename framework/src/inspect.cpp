@@ -91,7 +91,7 @@ PixelInspection inspectPixel(const Scene& scene, const Accelerator& accelerator,
     InspectedSample sample;
     sample.index = uint32_t(s);
     context.log = &sample.rays;
-    sample.radiance = renderSample(context, options, basis, sample.index);
+    sample.radiance = estimatePixelSample(context, options, basis, sample.index);
     sample.finite = isFinite(sample.radiance);
     // The camera ray starts on the image plane; recover the raster position
     // from the same random numbers the render used.

@@ -31,7 +31,8 @@ const char* integratorName(Integrator integrator) {
   return "?";
 }
 
-Color traceRadiance(TraceContext& context, const RenderOptions& options, const Ray& ray, Sampler& sampler) {
+Color estimateRadiance(TraceContext& context, const RenderOptions& options, const Ray& ray, Sampler& sampler) {
+  if (options.estimator) return options.estimator(context, ray, sampler);
   const Scene& scene = context.scene;
   switch (options.integrator) {
     case Integrator::Path:
@@ -61,14 +62,14 @@ Color traceRadiance(TraceContext& context, const RenderOptions& options, const R
   return Color(0.0f);
 }
 
-Color renderSample(TraceContext& context, const RenderOptions& options, const CameraBasis& basis, uint32_t sample) {
+Color estimatePixelSample(TraceContext& context, const RenderOptions& options, const CameraBasis& basis,
+                          uint32_t sample) {
   const RenderSettings& settings = context.scene.render;
   const IVec2 pixel = context.pixel;
   Sampler sampler(uint32_t(pixel.y) * uint32_t(settings.width) + uint32_t(pixel.x), sample, settings.seed);
   const Point2 raster = pixelSamplePosition(pixel, sampler.next2D());
   const Ray ray = generateCameraRay(context.scene.camera, basis, raster, {settings.width, settings.height});
-  return options.radiance ? options.radiance(context, ray, sampler)
-                          : traceRadiance(context, options, ray, sampler);
+  return estimateRadiance(context, options, ray, sampler);
 }
 
 ProgressiveRender::ProgressiveRender(const Scene& scene, const RenderOptions& options)
@@ -103,7 +104,7 @@ bool ProgressiveRender::step() {
         Color& pixelSum = sum_[pixelIndex];
         context.pixel = {x, y};
         for (int s = passBegin; s < passEnd; ++s) {
-          Color radiance = renderSample(context, options_, basis_, uint32_t(s));
+          Color radiance = estimatePixelSample(context, options_, basis_, uint32_t(s));
           if (isFinite(radiance)) {
             pixelSum += radiance;
           } else {

@@ -109,7 +109,7 @@ TEST_CASE("inspector: re-traced samples are the render's samples, with every ray
 TEST_CASE("inspector: NaN samples are flagged") {
   const Scene scene = smallDefaultScene(4);
   RenderOptions options;
-  options.radiance = [](TraceContext& context, const Ray&, Sampler&) {
+  options.estimator = [](TraceContext& context, const Ray&, Sampler&) {
     return context.pixel.x == 5 ? Color(std::nanf("")) : Color(1.0f);
   };
   const Accelerator accelerator(scene);

@@ -105,7 +105,7 @@ TEST_CASE("render: NaN and Inf samples are counted, located and left out, never 
   RenderOptions options;
   options.progress = false;
   options.threads = 2;
-  options.radiance = [](TraceContext& context, const Ray&, Sampler&) -> Color {
+  options.estimator = [](TraceContext& context, const Ray&, Sampler&) -> Color {
     if (context.pixel == IVec2(7, 3)) return Color(std::nanf(""), 1.0f, 1.0f);
     if (context.pixel == IVec2(2, 8)) return Color(kInfinity);
     return Color(5.0f);  // above 1: must not be clamped

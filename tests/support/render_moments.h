@@ -58,7 +58,7 @@ inline PixelMoments renderMoments(const Scene& scene, const ImageOptions& imageO
         glm::dvec3 sum(0.0), sumSquares(0.0);
         int n = 0;
         for (int i = 0; i < m.spp; ++i) {
-          const glm::dvec3 c(renderSample(context, options, basis, uint32_t(i)));
+          const glm::dvec3 c(estimatePixelSample(context, options, basis, uint32_t(i)));
           if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
             ++nonFinite;
             continue;

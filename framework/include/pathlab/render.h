@@ -34,9 +34,12 @@ enum class Integrator {
 std::optional<Integrator> integratorFromName(const std::string& name);
 const char* integratorName(Integrator integrator);
 
-// Radiance along a camera ray; replaces the integrator when set (tests and
-// debugger views use it to render any per-sample quantity).
-using RadianceFunction = std::function<Color(TraceContext& context, const Ray& ray, Sampler& sampler)>;
+// Radiance along a camera ray, the one quantity every integrator estimates.
+// The names, one per level: estimatePixelSample (a pixel's sample i: camera
+// ray, then) -> estimateRadiance (the integrator the options choose, or
+// options.estimator) -> task 5's tracePath, task 4's estimateDirectLighting,
+// the framework's traceWithStrategy.
+using RadianceEstimator = std::function<Color(TraceContext& context, const Ray& ray, Sampler& sampler)>;
 
 struct RenderOptions {
   Integrator integrator = Integrator::Path;
@@ -50,7 +53,7 @@ struct RenderOptions {
   int maxPassSpp = 64;  // the largest pass; the GUI uses small passes to refresh often
   bool progress = true;
   const std::atomic<bool>* cancel = nullptr;  // set from a signal handler to stop early
-  RadianceFunction radiance;                  // optional override of the integrator
+  RadianceEstimator estimator;  // when set, replaces the integrator (tests and debugger views render any per-sample quantity)
 };
 
 struct RenderStats {
@@ -69,9 +72,9 @@ struct RenderResult {
   RenderStats stats;
 };
 
-// Radiance arriving along one camera ray, by the chosen integrator (and,
-// for paths, strategy).
-Color traceRadiance(TraceContext& context, const RenderOptions& options, const Ray& ray, Sampler& sampler);
+// Radiance arriving along one camera ray: options.estimator when set, else
+// the chosen integrator (and, for paths, strategy).
+Color estimateRadiance(TraceContext& context, const RenderOptions& options, const Ray& ray, Sampler& sampler);
 
 RenderResult render(const Scene& scene, const RenderOptions& options);
 
@@ -113,6 +116,7 @@ class ProgressiveRender {
 
 // Sample `sample` of pixel context.pixel, exactly as render() takes it (same
 // random numbers): the debugger re-traces single pixels with it.
-Color renderSample(TraceContext& context, const RenderOptions& options, const CameraBasis& basis, uint32_t sample);
+Color estimatePixelSample(TraceContext& context, const RenderOptions& options, const CameraBasis& basis,
+                          uint32_t sample);
 
 }  // namespace pathlab

@@ -1,0 +1,294 @@
+// Autograder suite for task 2, part 2: ray–sphere intersection (T2.2) and
+// surface points (T2.3, T2.4), then the task's images. Part 1, the triangle
+// test (T2.1), is test_intersection.cpp.
+// Expected values come from double-precision computations on the same float
+// inputs. Tests run from basic to advanced. candidate::f(...) is the
+// student's f, computed in the candidate process (calls.h).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <vector>
+
+#include "check.h"
+#include "image_scenes.h"
+#include "image_test.h"
+#include "grading.h"
+#include "meshes.h"
+#include "scenes.h"
+#include "pathlab/scene_io.h"
+#include "calls.h"
+
+using namespace pathlab;
+using namespace pathlab::test;
+
+namespace {
+
+constexpr Interval kAll{0.0f, kInfinity};
+
+// Smallest root of the ray–sphere quadratic in double, in range, or -1.
+double sphereOracle(const Ray& ray, const Point3& center, float radius, double tMin = 0.0) {
+  DVec3 f = DVec3(ray.origin) - DVec3(center), d = glm::normalize(DVec3(ray.direction));
+  double b = glm::dot(f, d);
+  DVec3 perpendicular = f - b * d;
+  double disc = double(radius) * radius - glm::dot(perpendicular, perpendicular);
+  if (disc < 0) return -1;
+  double c = glm::dot(f, f) - double(radius) * radius;
+  double q = -(b + std::copysign(std::sqrt(disc), b));
+  double t0 = c / q, t1 = q;
+  if (t0 > t1) std::swap(t0, t1);
+  if (t0 > tMin) return t0;
+  if (t1 > tMin) return t1;
+  return -1;
+}
+
+// A ray from about `distance` away whose line passes `offset` times the
+// radius from the sphere's centre.
+Ray rayPastSphere(Random& random, const Point3& center, float radius, double distance, double offset) {
+  DVec3 axis = random.unitVector();
+  DVec3 side = glm::normalize(glm::cross(axis, random.unitVector()));
+  DVec3 origin = DVec3(center) + side * (offset * radius) + axis * distance;
+  return Ray{Point3(origin), Vec3(-axis)};
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- spheres
+
+TEST_CASE("T2.2 sphere: a ray from outside hits the near side at the right t" *
+          grading(3, "solve |o + t d - c|^2 = r^2 for t and return the smaller positive root; b' = f.d "
+                     "with f = o - c (not c - o)")) {
+  Random random(31);
+  for (int i = 0; i < 2000; ++i) {
+    Point3 center(random.inCube(10));
+    float radius = float(random.uniform(0.1, 3.0));
+    Ray ray = rayPastSphere(random, center, radius, radius * random.uniform(1.5, 20.0), random.uniform(0.0, 0.95));
+    double expected = sphereOracle(ray, center, radius);
+    REQUIRE(expected > 0);
+    auto t = candidate::intersectSphere(ray, kAll, center, radius);
+    CAPTURE(i);
+    REQUIRE(t.has_value());
+    CHECK(*t == doctest::Approx(expected).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("T2.2 sphere: misses beside, behind and outside the range; the far side when the near one is excluded" *
+          grading(3, "a negative discriminant is a miss; check both roots against the range, smaller "
+                     "first, so a near root below range.min falls through to the far root")) {
+  const Point3 c{0, 0, -5};
+  const float r = 1.0f;
+  const Ray ahead{{0, 0, 0}, {0, 0, -1}};  // roots at t = 4 and t = 6
+  REQUIRE(candidate::intersectSphere(ahead, kAll, c, r).has_value());
+  CHECK(*candidate::intersectSphere(ahead, kAll, c, r) == doctest::Approx(4.0f));
+  CHECK_FALSE(candidate::intersectSphere(Ray{{1.01f, 0, 0}, {0, 0, -1}}, kAll, c, r).has_value());   // beside
+  CHECK_FALSE(candidate::intersectSphere(Ray{{0, 0, 0}, {0, 0, 1}}, kAll, c, r).has_value());        // behind
+  CHECK_FALSE(candidate::intersectSphere(ahead, {0.0f, 3.9f}, c, r).has_value());                    // too near
+  CHECK_FALSE(candidate::intersectSphere(ahead, {6.1f, kInfinity}, c, r).has_value());               // too far
+  auto far = candidate::intersectSphere(ahead, {4.5f, kInfinity}, c, r);                             // skip the near root
+  REQUIRE(far.has_value());
+  CHECK(*far == doctest::Approx(6.0f));
+}
+
+TEST_CASE("T2.2 sphere: from inside, the hit is on the far side (origin inside)" *
+          grading(2, "inside the sphere one root is negative: return the positive one, t1 = q / a or "
+                     "c' / q, whichever is in range")) {
+  Random random(32);
+  for (int i = 0; i < 1000; ++i) {
+    Point3 center(random.inCube(5));
+    float radius = float(random.uniform(0.5, 2.0));
+    DVec3 origin = DVec3(center) + random.unitVector() * (radius * random.uniform(0.0, 0.9));
+    Ray ray{Point3(origin), Vec3(random.unitVector())};
+    double expected = sphereOracle(ray, center, radius);
+    auto t = candidate::intersectSphere(ray, kAll, center, radius);
+    CAPTURE(i);
+    REQUIRE(t.has_value());
+    CHECK(*t == doctest::Approx(expected).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("T2.2 sphere: a small sphere far away is hit where it is (no cancellation)" *
+          grading(3, "b'^2 - a c' subtracts two huge, nearly equal numbers and loses r^2: use "
+                     "r^2 - |f - (b'/a) d|^2, and the stable roots q = -(b' + sign(b') sqrt(D))")) {
+  Random random(33);
+  int wrong = 0, total = 0;
+  for (auto [radius, distance] : {std::pair{0.01, 1e3}, std::pair{1.0, 1e4}, std::pair{1e-3, 50.0}}) {
+    for (int i = 0; i < 500; ++i) {
+      Point3 center(random.inCube(distance * 0.01));
+      double offset = random.uniform(0.0, 1.3);
+      if (offset > 0.9 && offset < 1.1) continue;  // leave the tangent band to its own test
+      Ray ray = rayPastSphere(random, center, float(radius), distance, offset);
+      double expected = sphereOracle(ray, center, float(radius));
+      auto t = candidate::intersectSphere(ray, kAll, center, float(radius));
+      ++total;
+      bool ok = (expected > 0) == t.has_value();
+      if (ok && t) ok = std::abs(*t - expected) <= 0.05 * radius + 4e-7 * expected;
+      if (!ok && ++wrong <= 3) {
+        MESSAGE("radius " << radius << " at distance " << distance << ", offset " << offset << " r: expected "
+                          << (expected > 0 ? std::to_string(expected) : "a miss") << ", got "
+                          << (t ? std::to_string(*t) : "a miss"));
+      }
+    }
+  }
+  INFO(wrong << " of " << total << " rays at small far spheres were wrong");
+  CHECK(wrong == 0);
+}
+
+TEST_CASE("T2.2 sphere: tangent rays — just inside hits, just outside misses, never NaN" *
+          grading(2, "the discriminant of a near-tangent ray is tiny: compute it without cancellation and "
+                     "treat D < 0 as a miss before taking sqrt")) {
+  Random random(34);
+  for (int i = 0; i < 500; ++i) {
+    Point3 center(random.inCube(3));
+    float radius = float(random.uniform(0.2, 2.0));
+    Ray inside = rayPastSphere(random, center, radius, 5.0 * radius, 1.0 - 1e-3);
+    Ray outside = rayPastSphere(random, center, radius, 5.0 * radius, 1.0 + 1e-3);
+    Ray exact = rayPastSphere(random, center, radius, 5.0 * radius, 1.0);
+    CAPTURE(i);
+    auto hit = candidate::intersectSphere(inside, kAll, center, radius);
+    REQUIRE(hit.has_value());
+    CHECK(std::isfinite(*hit));
+    CHECK(*hit == doctest::Approx(sphereOracle(inside, center, radius)).epsilon(1e-3));
+    CHECK_FALSE(candidate::intersectSphere(outside, kAll, center, radius).has_value());
+    auto grazing = candidate::intersectSphere(exact, kAll, center, radius);
+    if (grazing) CHECK(std::isfinite(*grazing));
+  }
+}
+
+TEST_CASE("T2.2 sphere: a ray starting on the surface finds the far side going in, nothing going out" *
+          grading(2, "from a point on the surface one root is ~0; with range.min just above it, return the "
+                     "far root -2 b' when heading in, and no hit when heading out")) {
+  Random random(35);
+  for (double radius : {1e-3, 1.0, 1e3}) {
+    for (int i = 0; i < 300; ++i) {
+      Point3 center(random.inCube(radius * 10));
+      DVec3 normal = random.unitVector();
+      Point3 origin(DVec3(center) + normal * radius);
+      DVec3 in = -normal + 0.8 * random.unitVector();
+      if (glm::dot(in, normal) > -0.3) in = -normal;
+      in = glm::normalize(in);
+      Interval range{float(1e-4 * radius), kInfinity};
+      CAPTURE(radius);
+      CAPTURE(i);
+      auto t = candidate::intersectSphere(Ray{origin, Vec3(in)}, range, center, float(radius));
+      REQUIRE(t.has_value());
+      CHECK(*t == doctest::Approx(-2.0 * radius * glm::dot(in, normal)).epsilon(1e-3));
+      CHECK_FALSE(candidate::intersectSphere(Ray{origin, Vec3(-in)}, range, center, float(radius)).has_value());
+    }
+  }
+}
+
+// ---------------------------------------------------------------- surface points
+
+TEST_CASE("T2.3 triangle surface point: position from barycentrics, normal from the winding" *
+          grading(2, "point = b0 p0 + b1 p1 + b2 p2 with b0 = 1 - b1 - b2; geometric normal = "
+                     "normalize(cross(p1 - p0, p2 - p0)); shading normal = geometric without vertex normals")) {
+  Random random(41);
+  for (int i = 0; i < 500; ++i) {
+    Point3 p0(random.inCube(5)), p1(random.inCube(5)), p2(random.inCube(5));
+    DVec3 n = glm::cross(DVec3(p1 - p0), DVec3(p2 - p0));
+    if (glm::length(n) < 0.1) continue;
+    float b1 = float(random.uniform(0, 0.6)), b2 = float(random.uniform(0, 0.4));
+    SurfacePoint s = candidate::triangleSurfacePoint(TriangleHit{1.0f, b1, b2}, p0, p1, p2, nullptr);
+    DVec3 point = (1.0 - b1 - b2) * DVec3(p0) + double(b1) * DVec3(p1) + double(b2) * DVec3(p2);
+    CAPTURE(i);
+    INFO("expected point " << str(Vec3(point)) << ", got " << str(s.point));
+    CHECK(glm::length(DVec3(s.point) - point) < 1e-5);
+    INFO("expected normal " << str(Vec3(glm::normalize(n))) << ", got " << str(s.geometricNormal));
+    CHECK(near(s.geometricNormal, Vec3(glm::normalize(n)), 1e-5f));
+    CHECK(near(s.shadingNormal, s.geometricNormal, 1e-6f));
+  }
+}
+
+TEST_CASE("T2.3 triangle surface point: vertex normals are interpolated and decide the outside" *
+          grading(2, "shading normal = normalize(b0 n0 + b1 n1 + b2 n2); if it points against the geometric "
+                     "normal, flip the geometric one; if it is zero, use the geometric normal")) {
+  const Point3 p0{0, 0, 0}, p1{1, 0, 0}, p2{0, 1, 0};  // winding normal +z
+  const Vec3 up[3] = {glm::normalize(Vec3(-0.3f, 0, 1)), glm::normalize(Vec3(0.3f, 0, 1)), Vec3(0, 0, 1)};
+  SurfacePoint s = candidate::triangleSurfacePoint(TriangleHit{1.0f, 0.5f, 0.25f}, p0, p1, p2, up);
+  Vec3 expected = glm::normalize(0.25f * up[0] + 0.5f * up[1] + 0.25f * up[2]);
+  INFO("expected shading normal " << str(expected) << ", got " << str(s.shadingNormal));
+  CHECK(near(s.shadingNormal, expected, 1e-5f));
+  CHECK(near(s.geometricNormal, Vec3(0, 0, 1), 1e-6f));
+
+  // Vertex normals pointing down: the geometric normal follows them.
+  const Vec3 down[3] = {Vec3(0, 0, -1), glm::normalize(Vec3(0.2f, 0, -1)), Vec3(0, 0, -1)};
+  s = candidate::triangleSurfacePoint(TriangleHit{1.0f, 0.2f, 0.3f}, p0, p1, p2, down);
+  CHECK(s.shadingNormal.z < -0.9f);
+  CHECK(near(s.geometricNormal, Vec3(0, 0, -1), 1e-6f));
+
+  // Opposite normals cancel: fall back to the geometric normal, never NaN.
+  const Vec3 opposite[3] = {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(0, 0, 1)};
+  s = candidate::triangleSurfacePoint(TriangleHit{1.0f, 0.5f, 0.0f}, p0, p1, p2, opposite);
+  REQUIRE(finite(s.shadingNormal));
+  CHECK(near(s.shadingNormal, s.geometricNormal, 1e-6f));
+  CHECK(std::abs(glm::length(s.geometricNormal) - 1.0f) < 1e-6f);
+}
+
+TEST_CASE("T2.4 sphere surface point: on the sphere, with the outward unit normal" *
+          grading(2, "normal = normalize(ray.at(t) - center), outward even when the ray starts inside; "
+                     "re-project the point onto the sphere: center + radius * normal")) {
+  Random random(42);
+  for (int i = 0; i < 500; ++i) {
+    Point3 center(random.inCube(100));
+    float radius = float(random.uniform(0.01, 10.0));
+    bool fromInside = i % 2 == 0;
+    Ray ray = fromInside ? Ray{Point3(DVec3(center) + random.unitVector() * (0.5 * radius)), Vec3(random.unitVector())}
+                         : rayPastSphere(random, center, radius, radius * 3.0, random.uniform(0, 0.9));
+    double t = sphereOracle(ray, center, radius);
+    REQUIRE(t > 0);
+    SurfacePoint s = candidate::sphereSurfacePoint(ray, float(t), center, radius);
+    DVec3 expectedNormal = glm::normalize(DVec3(ray.origin) + t * DVec3(ray.direction) - DVec3(center));
+    CAPTURE(i);
+    INFO("expected normal " << str(Vec3(expectedNormal)) << ", got " << str(s.geometricNormal));
+    // The hit point carries float rounding of the coordinates (~1e-7 of their
+    // size); divided by a small radius that bends the normal a little.
+    const double scale = glm::length(DVec3(ray.origin)) + glm::length(DVec3(center)) + t;
+    CHECK(glm::length(DVec3(s.geometricNormal) - expectedNormal) < 1e-5 + 4e-7 * scale / radius);
+    CHECK(near(s.shadingNormal, s.geometricNormal, 1e-6f));
+    double off = std::abs(glm::length(DVec3(s.point) - DVec3(center)) - radius);
+    CHECK(off <= 1e-6 * (radius + glm::length(DVec3(center))));
+  }
+}
+
+// ---------------------------------------------------------------- images
+
+namespace {
+
+// Triangles seen from both sides, a mesh with vertex normals and one whose
+// vertex normals point against its winding (the normals decide the
+// outside), spheres seen from outside and the enclosing sky sphere seen from
+// inside. The normals view shows each shading normal as a colour.
+Scene surfacesScene() {
+  Scene scene = sceneFromJson(R"({
+    "camera": { "position": [0, 1.0, 4], "look_at": [0, 0.6, 0], "up": [0, 1, 0], "vfov": 45 },
+    "render": { "width": 64, "height": 48, "spp": 16 },
+    "materials": { "grey": { "albedo": [0.6, 0.6, 0.6] }, "orange": { "albedo": [0.8, 0.5, 0.2] } },
+    "meshes": [
+      { "name": "floor", "material": "grey", "quad": { "corner": [-3, 0, 3], "edge_u": [6, 0, 0], "edge_v": [0, 0, -6] } },
+      { "name": "facing the camera", "material": "orange",
+        "quad": { "corner": [-2.0, 0.3, -0.5], "edge_u": [0.8, 0, 0], "edge_v": [0, 0.8, 0.2] } },
+      { "name": "facing away", "material": "orange",
+        "quad": { "corner": [-1.1, 1.1, -0.5], "edge_u": [0.8, 0, 0.1], "edge_v": [0, -0.8, 0] } }
+    ],
+    "spheres": [ { "center": [0.0, 0.3, 1.0], "radius": 0.3, "material": "orange" },
+                 { "center": [0, 0, 0], "radius": 20, "material": "grey" } ],
+    "lights": [ { "type": "point", "position": [1.5, 2.5, 2.5], "intensity": [6, 6, 6] } ]
+  })", "surfaces");
+  scene.meshes.push_back(smoothSphere(1, Point3(0.9f, 0.5f, -0.2f), 0.5f, 1));
+  TriangleMesh inverted = smoothSphere(1, Point3(1.7f, 0.3f, 0.9f), 0.3f, 1);
+  for (glm::uvec3& t : inverted.triangles) std::swap(t.y, t.z);  // wound inwards; the normals say outwards
+  scene.meshes.push_back(inverted);
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("T2.3 image: triangles from both sides, vertex normals and spheres from inside and out" *
+          grading(4, "compare your pictures with the references (files named above): in the normals view a wrong colour "
+                     "is a wrong normal (not interpolated, not unit, or not turned to the vertex normals' side); "
+                     "holes are missed hits (culled back faces, a sphere from inside)")) {
+  checkImage({"02-intersection", "surfaces-normals", surfacesScene(), {.integrator = Integrator::Normals}});
+  checkImage({"02-intersection", "surfaces-lit", surfacesScene(), {.integrator = Integrator::Direct}});
+}
