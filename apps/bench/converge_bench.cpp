@@ -60,6 +60,10 @@ Strategy strategy(const std::string& name) {
     frameworkStrategy({.lightSampling = false}, "BSDF sampling only, no next-event estimation");
   } else if (name == "no-rr") {
     frameworkStrategy({.russianRoulette = false}, "no Russian roulette");
+  } else if (name == "independent") {
+    s.options.sampler = SampleSequence::Independent;
+    s.tasks = {4, 5};
+    s.change = "independent samples instead of Owen-scrambled Sobol ones (the framework's sampler, --sampler independent)";
   } else if (name == "mis-balance") {
     frameworkStrategy({.mis = MisHeuristic::Balance}, "MIS of light and BSDF samples, balance heuristic");
   } else if (name == "mis-power") {
@@ -67,7 +71,7 @@ Strategy strategy(const std::string& name) {
   } else {
     throw Error("--strategies: unknown strategy \"" + name +
                 "\" (reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, mis-balance, mis-power, env-importance, "
-                "env-uniform)");
+                "env-uniform, independent)");
   }
   return s;
 }
@@ -179,6 +183,20 @@ struct Point {
 std::optional<double> efficiencyOf(double relMse, double seconds) {
   if (!(relMse > 0.0) || !(seconds > 0.0) || !std::isfinite(relMse)) return std::nullopt;
   return 1.0 / (relMse * seconds);
+}
+
+// The least-squares slope of log relMSE against log spp: -1 for independent
+// samples (plain Monte Carlo), below -1 where low-discrepancy samples pay off.
+std::optional<double> convergenceSlope(const std::vector<Point>& curve) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (const Point& p : curve) {
+    if (!(p.relMse > 0.0) || !std::isfinite(p.relMse)) continue;
+    const double x = std::log(double(p.spp)), y = std::log(p.relMse);
+    n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  const double denominator = n * sxx - sx * sx;
+  if (n < 3 || !(denominator > 0.0)) return std::nullopt;
+  return (n * sxy - sx * sy) / denominator;
 }
 
 std::string csvQuote(const std::string& text) {
@@ -353,12 +371,13 @@ int runConvergeBench(const ConvergeOptions& options) {
 
   // Efficiency = 1 / (relMSE x time): for unbiased estimators it settles to a
   // constant, and the ratio of two is the ratio of times to the same error.
-  std::vector<std::optional<double>> efficiency(strategies.size());
-  std::printf("%-18s %12s  %s\n", "strategy", "efficiency", "(median of the last 3 points; whose code ran)");
+  std::vector<std::optional<double>> efficiency(strategies.size()), slope(strategies.size());
+  std::printf("%-18s %12s %7s  %s\n", "strategy", "efficiency", "slope",
+              "(median of the last 3 points; slope of log relMSE against log spp, -1 for plain Monte Carlo; whose code ran)");
   for (size_t i = 0; i < strategies.size(); ++i) {
     const Strategy& s = strategies[i];
     if (!availability[i].available) {
-      std::printf("%-18s %12s  %s\n", s.name.c_str(), "unavailable", availability[i].reason.c_str());
+      std::printf("%-18s %12s %7s  %s\n", s.name.c_str(), "unavailable", "", availability[i].reason.c_str());
       continue;
     }
     std::vector<double> last;
@@ -367,10 +386,13 @@ int runConvergeBench(const ConvergeOptions& options) {
     }
     std::sort(last.begin(), last.end());
     if (!last.empty()) efficiency[i] = last[last.size() / 2];
+    slope[i] = convergenceSlope(curves[i]);
+    char slopeText[32] = "-";
+    if (slope[i]) std::snprintf(slopeText, sizeof slopeText, "%.2f", *slope[i]);
     const std::string who = s.tasks.empty() ? "default strategy: " + describeTasks(linked, {4, 5, 7})
                             : s.framework     ? "framework tracer, pieces of " + describeTasks(linked, s.tasks)
                                               : describeTasks(linked, s.tasks);
-    std::printf("%-18s %12s  %s\n", s.name.c_str(), brief(efficiency[i], "-").c_str(), who.c_str());
+    std::printf("%-18s %12s %7s  %s\n", s.name.c_str(), brief(efficiency[i], "-").c_str(), slopeText, who.c_str());
   }
   std::string comparison;
   if (strategies.size() >= 2) {
@@ -427,7 +449,8 @@ int runConvergeBench(const ConvergeOptions& options) {
                     {"relies_on", tasks},
                     {"available", availability[i].available},
                     {"points", points},
-                    {"efficiency", efficiency[i] ? Json(*efficiency[i]) : Json(nullptr)}};
+                    {"efficiency", efficiency[i] ? Json(*efficiency[i]) : Json(nullptr)},
+                    {"slope", slope[i] ? Json(*slope[i]) : Json(nullptr)}};
       if (!availability[i].available) entry["reason"] = availability[i].reason;
       if (!availability[i].note.empty()) entry["note"] = availability[i].note;
       entries.push_back(entry);

@@ -87,7 +87,7 @@ inline double chiSquare(const std::vector<double>& observed, const std::vector<d
   return chi;
 }
 
-// The demos, one function each (demos_sampling.cpp, demos_rendering.cpp).
+// The demos, one function each (demos_sampling.cpp, demos_rendering.cpp, demos_sequences.cpp).
 Demo pdfCdfDemo();
 Demo discreteDemo();
 Demo annulusDemo();
@@ -95,5 +95,6 @@ Demo hemisphereDemo();
 Demo piDemo();
 Demo renderingEquationDemo();
 Demo environmentDemo();
+Demo sequencesDemo();
 
 }  // namespace pathlab::demo

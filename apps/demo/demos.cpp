@@ -5,8 +5,8 @@
 namespace pathlab::demo {
 
 const std::vector<Demo>& allDemos() {
-  static const std::vector<Demo> demos = {pdfCdfDemo(), discreteDemo(),          annulusDemo(),    hemisphereDemo(),
-                                          piDemo(),     renderingEquationDemo(), environmentDemo()};
+  static const std::vector<Demo> demos = {pdfCdfDemo(), discreteDemo(),          annulusDemo(),     hemisphereDemo(),
+                                          piDemo(),     renderingEquationDemo(), environmentDemo(), sequencesDemo()};
   return demos;
 }
 

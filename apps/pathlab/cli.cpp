@@ -37,6 +37,7 @@ struct RenderArgs {
   std::string reference;
   std::string integrator = "path";
   std::string accel;  // empty: defaultTraversal
+  std::string sampler = "sobol";
   bool quiet = false;
 };
 
@@ -137,6 +138,9 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
     if (!traversal) throw Error("--accel: unknown traversal " + inQuotes(args.accel) + " (task3, fast)");
     options.traversal = *traversal;
   }
+  const std::optional<SampleSequence> sampler = sampleSequenceFromName(args.sampler);
+  if (!sampler) throw Error("--sampler: unknown sampler " + inQuotes(args.sampler) + " (independent, sobol)");
+  options.sampler = *sampler;
   checkOutputPath(args.output);
   std::optional<Image> reference;  // read and checked before an hour of rendering, not after
   if (!args.reference.empty()) {
@@ -165,9 +169,9 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
     return 130;
   }
   if (!args.quiet) {
-    std::printf("%s: %dx%d, %d spp, %s integrator, %s traversal, tasks %s\n", args.output.c_str(), settings.width,
-                settings.height, settings.samplesPerPixel, integratorName(options.integrator),
-                traversalName(options.traversal), PATHLAB_TASK_SUMMARY);
+    std::printf("%s: %dx%d, %d spp, %s integrator, %s traversal, %s samples, tasks %s\n", args.output.c_str(),
+                settings.width, settings.height, settings.samplesPerPixel, integratorName(options.integrator),
+                traversalName(options.traversal), sampleSequenceName(options.sampler), PATHLAB_TASK_SUMMARY);
     std::printf("time %.3f s (BVH build %.1f ms), %s samples/s, %s rays/s\n", stats.seconds, stats.buildSeconds * 1e3,
                 formatRate(double(stats.samples) / stats.seconds).c_str(),
                 formatRate(double(stats.rays) / stats.seconds).c_str());
@@ -248,6 +252,9 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel, std::atomic<b
   app.add_option("--accel", render.accel,
                  "How rays walk task 3's tree: task3 (your intersectClosest/intersectAny) or fast (the framework's SIMD "
                  "walk, same hits); default fast where task 3 is the reference");
+  app.add_option("--sampler", render.sampler,
+                 "Random numbers: sobol (default: Owen-scrambled Sobol points per pixel, less error for the same "
+                 "samples) or independent (plain Monte Carlo)");
   app.add_flag("-q,--quiet", render.quiet, "No progress bar or summary");
 
   DebugArgs debug;

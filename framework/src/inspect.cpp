@@ -95,8 +95,7 @@ PixelInspection inspectPixel(const Scene& scene, const Accelerator& accelerator,
     sample.finite = isFinite(sample.radiance);
     // The camera ray starts on the image plane; recover the raster position
     // from the same random numbers the render used.
-    Sampler sampler(uint32_t(pixel.y) * uint32_t(scene.render.width) + uint32_t(pixel.x), sample.index,
-                    scene.render.seed);
+    Sampler sampler = pixelSampler(scene.render, pixel, sample.index, options.sampler);
     sample.raster = pixelSamplePosition(pixel, sampler.next2D());
     sample.lines = describeRays(scene, sample.rays);
     if (sample.finite) {

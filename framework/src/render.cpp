@@ -31,6 +31,16 @@ const char* integratorName(Integrator integrator) {
   return "?";
 }
 
+std::optional<SampleSequence> sampleSequenceFromName(const std::string& name) {
+  if (name == "independent") return SampleSequence::Independent;
+  if (name == "sobol") return SampleSequence::Sobol;
+  return std::nullopt;
+}
+
+const char* sampleSequenceName(SampleSequence sequence) {
+  return sequence == SampleSequence::Sobol ? "sobol" : "independent";
+}
+
 Color estimateRadiance(TraceContext& context, const RenderOptions& options, const Ray& ray, Sampler& sampler) {
   if (options.estimator) return options.estimator(context, ray, sampler);
   const Scene& scene = context.scene;
@@ -62,11 +72,15 @@ Color estimateRadiance(TraceContext& context, const RenderOptions& options, cons
   return Color(0.0f);
 }
 
+Sampler pixelSampler(const RenderSettings& settings, IVec2 pixel, uint32_t sample, SampleSequence sequence) {
+  return Sampler(uint32_t(pixel.y) * uint32_t(settings.width) + uint32_t(pixel.x), sample, settings.seed, sequence);
+}
+
 Color estimatePixelSample(TraceContext& context, const RenderOptions& options, const CameraBasis& basis,
                           uint32_t sample) {
   const RenderSettings& settings = context.scene.render;
   const IVec2 pixel = context.pixel;
-  Sampler sampler(uint32_t(pixel.y) * uint32_t(settings.width) + uint32_t(pixel.x), sample, settings.seed);
+  Sampler sampler = pixelSampler(settings, pixel, sample, options.sampler);
   const Point2 raster = pixelSamplePosition(pixel, sampler.next2D());
   const Ray ray = generateCameraRay(context.scene.camera, basis, raster, {settings.width, settings.height});
   return estimateRadiance(context, options, ray, sampler);

@@ -16,8 +16,8 @@ expect() { awk "BEGIN { exit !($2) }" || fail "$1 ($2)"; }
 number() { grep -oE "$2 [-0-9.e+]+" "$1" | head -1 | awk '{print $NF}'; }  # number after a phrase
 
 names=$("$demo" --list | awk '{print $1}')
-[[ $(echo "$names" | wc -l) == 7 ]] || fail "--list: expected 7 demos, got: $names"
-for name in pdf-cdf discrete annulus hemisphere pi rendering-equation env-importance; do
+[[ $(echo "$names" | wc -l) == 8 ]] || fail "--list: expected 8 demos, got: $names"
+for name in pdf-cdf discrete annulus hemisphere pi rendering-equation env-importance sequences; do
   echo "$names" | grep -qx "$name" || fail "--list lacks $name"
 done
 
@@ -60,6 +60,10 @@ exact=$(number "$t" 'area\) =|angle\) =')
 light=$(grep "light (area)" "$t" | grep -oE "mean [0-9.]+" | awk '{print $2}')
 expect "rendering-equation: light sampling agrees with the exact value ($light vs $exact)" "$light / $exact > 0.98 && $light / $exact < 1.02"
 expect "rendering-equation: light sampling beats uniform by > 100x" "$(grep -oE 'needs [0-9.e+]+x' "$t" | awk '{print $2}' | tr -d x) > 100"
+t=$out/sequences.txt  # slopes over seeds 1-20: -0.52..-0.47, -1.04..-0.98, -1.51..-1.45
+expect "sequences: independent points converge as 1/sqrt(N)" "$(number "$t" 'independent: RMS error [0-9.e-]+ at N = [0-9]+, slope of log error against log N') > -0.6 && $(number "$t" 'independent: RMS error [0-9.e-]+ at N = [0-9]+, slope of log error against log N') < -0.4"
+expect "sequences: jittered points as 1/N" "$(grep stratified "$t" | grep -oE 'log N -?[0-9.]+' | awk '{print $3}') < -0.9"
+expect "sequences: Sobol points as N^-1.5" "$(grep Sobol "$t" | grep -oE 'log N -?[0-9.]+' | awk '{print $3}') < -1.35"
 t=$out/env-importance.txt
 if [[ $task7 == reference ]]; then
 grep -q "hold [0-9.]*% of the PMF and received [0-9.]*% of the samples" "$t" || fail "env-importance: no share line"

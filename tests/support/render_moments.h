@@ -35,6 +35,9 @@ inline PixelMoments renderMoments(const Scene& scene, const ImageOptions& imageO
   RenderOptions options;
   options.integrator = imageOptions.integrator;
   options.environmentSampling = imageOptions.environmentSampling;
+  // Independent samples: only for them is the variance of a pixel's mean the
+  // sample variance over n, which the image tests' z-scores rely on.
+  options.sampler = SampleSequence::Independent;
   options.progress = false;
   const Accelerator accelerator(scene);
   const Lights lights = Lights::fromScene(scene, kLinkedTasks.environment, options.environmentSampling);

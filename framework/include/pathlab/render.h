@@ -33,6 +33,9 @@ enum class Integrator {
 
 std::optional<Integrator> integratorFromName(const std::string& name);
 const char* integratorName(Integrator integrator);
+// --sampler: "independent" or "sobol".
+std::optional<SampleSequence> sampleSequenceFromName(const std::string& name);
+const char* sampleSequenceName(SampleSequence sequence);
 
 // Radiance along a camera ray, the one quantity every integrator estimates.
 // The names, one per level: estimatePixelSample (a pixel's sample i: camera
@@ -48,6 +51,7 @@ struct RenderOptions {
   SamplingStrategy strategy;
   EnvironmentSampling environmentSampling = EnvironmentSampling::Importance;
   Traversal traversal = Traversal::Task3;  // --accel: how rays walk task 3's tree
+  SampleSequence sampler = SampleSequence::Sobol;  // --sampler: the random numbers (random.h)
   int threads = 0;    // 0: all hardware threads
   int tileSize = 16;
   int maxPassSpp = 64;  // the largest pass; the GUI uses small passes to refresh often
@@ -113,6 +117,9 @@ class ProgressiveRender {
   std::unique_ptr<ProgressBar> progress_;
 };
 
+
+// The random numbers of sample `sample` of `pixel`, as render() draws them.
+Sampler pixelSampler(const RenderSettings& settings, IVec2 pixel, uint32_t sample, SampleSequence sequence);
 
 // Sample `sample` of pixel context.pixel, exactly as render() takes it (same
 // random numbers): the debugger re-traces single pixels with it.
