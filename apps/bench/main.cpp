@@ -1,6 +1,6 @@
 // pathlab-bench: benchmarks that print numbers (never timed unit tests).
 //   pathlab-bench bvh [MESH.obj | --triangles N] [--threads N] [--json]
-//   pathlab-bench render [--quick] [--threads N] [--accel task3|fast] [--json]
+//   pathlab-bench render [--quick] [--threads N] [--accel task3|fast] [--sampler sobol|independent] [--json]
 //   pathlab-bench converge SCENE [--strategies a,b] [--budget SECONDS] [--out DIR] [--json]
 #include <CLI/CLI.hpp>
 
@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   renderCommand->add_flag("--quick", render.quick, "64 spp instead of 1024 (under 45 s on 2 cores)");
   renderCommand->add_option("--threads", render.threads, "Threads (default: all cores)");
   renderCommand->add_option("--accel", render.accel, "task3 or fast (default: fast where task 3 is the reference)");
+  renderCommand->add_option("--sampler", render.sampler, "sobol (default) or independent");
   renderCommand->add_flag("--json", render.json, "Print one JSON object as the last line");
   pathlab::bench::ConvergeOptions converge;
   CLI::App* convergeCommand = app.add_subcommand(

@@ -29,12 +29,15 @@ int runRenderBench(const RenderBenchOptions& options) {
     if (!traversal) throw Error("--accel: unknown traversal " + inQuotes(options.accel) + " (task3, fast)");
     render.traversal = *traversal;
   }
+  const std::optional<SampleSequence> sampler = sampleSequenceFromName(options.sampler);
+  if (!sampler) throw Error("--sampler: unknown sampler " + inQuotes(options.sampler) + " (sobol, independent)");
+  render.sampler = *sampler;
   const RenderResult result = pathlab::render(scene, render);
   const RenderStats& stats = result.stats;
   const double paths = double(stats.samples) / stats.seconds, rays = double(stats.rays) / stats.seconds;
-  std::printf("grading render%s: %dx%d, %d spp, -m %d, %d threads, %s traversal\n", options.quick ? " (quick)" : "",
-              scene.render.width, scene.render.height, scene.render.samplesPerPixel, scene.render.maxDepth,
-              render.threads, traversalName(render.traversal));
+  std::printf("grading render%s: %dx%d, %d spp, -m %d, %d threads, %s traversal, %s samples\n",
+              options.quick ? " (quick)" : "", scene.render.width, scene.render.height, scene.render.samplesPerPixel,
+              scene.render.maxDepth, render.threads, traversalName(render.traversal), sampleSequenceName(render.sampler));
   // A path runs every task: camera rays, intersection, BVH, direct lighting,
   // path tracing (and task 6's BSDFs, task 7's sky where the scene has them).
   const LinkedTasks linked = linkedTasks();
@@ -48,6 +51,7 @@ int runRenderBench(const RenderBenchOptions& options) {
                            {"height", scene.render.height},                          {"max_depth", scene.render.maxDepth},
                            {"threads", render.threads},                              {"quick", options.quick},
                            {"traversal", traversalName(render.traversal)},
+                           {"sampler", sampleSequenceName(render.sampler)},
                            {"tasks", allTasksJson(linked)}};
     std::printf("%s\n", json.dump().c_str());
   }

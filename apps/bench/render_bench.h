@@ -11,6 +11,7 @@ struct RenderBenchOptions {
   bool json = false;
   int threads = 0;     // 0: all cores
   std::string accel;   // "task3" or "fast"; empty: the CLI's default (defaultTraversal)
+  std::string sampler = "sobol";  // or "independent"
 };
 
 int runRenderBench(const RenderBenchOptions& options);

@@ -30,7 +30,7 @@ inline uint64_t mix64(uint64_t x) {
 }
 
 // x with its 32 bits in the opposite order.
-inline uint32_t reverseBits(uint32_t x) {
+constexpr uint32_t reverseBits(uint32_t x) {
   x = (x << 16) | (x >> 16);
   x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
   x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
@@ -38,31 +38,31 @@ inline uint32_t reverseBits(uint32_t x) {
   return ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
 }
 
-// A nested uniform (Owen) scramble of x read as a binary fraction, most
-// significant bit first: each bit is flipped by a hash of the bits before it.
-// The hash is Vegdahl's refinement of Laine and Karras' permutation.
-inline uint32_t owenScramble(uint32_t x, uint32_t seed) {
-  x = reverseBits(x);
+// A nested uniform (Owen) scramble of a binary fraction stored bit-reversed
+// (its first digit in bit 0): each bit is flipped by a hash of the bits below
+// it, i.e. of the digits before it. Vegdahl's refinement of Laine and Karras'
+// permutation. The fraction itself is reverseBits(result).
+inline uint32_t owenScrambleReversed(uint32_t reversed, uint32_t seed) {
+  uint32_t x = reversed;
   x ^= x * 0x3d20adeau;
   x += seed;
   x *= (seed >> 16) | 1u;
   x ^= x * 0x05526c56u;
   x ^= x * 0x53a22864u;
-  return reverseBits(x);
+  return x;
 }
 
-// The first two dimensions of the Sobol sequence, as 32-bit fractions:
-// van der Corput (the index's bits reversed), and the second dimension,
-// whose direction numbers are v0 = 1/2, v(k+1) = v(k) xor v(k) / 2: the
-// XOR of v(k) over the index's set bits k, looked up a byte at a time.
-inline uint32_t sobolDimension0(uint32_t index) { return reverseBits(index); }
-
+// The first two dimensions of the Sobol sequence, bit-reversed (so ready
+// for owenScrambleReversed). Dimension 0 is van der Corput: the fraction is
+// the index's bits reversed, so reversed it is the index itself. Dimension
+// 1 has direction numbers v0 = 1/2, v(k+1) = v(k) xor v(k) / 2: the XOR of
+// v(k) over the index's set bits k, looked up a byte at a time.
 struct SobolByteTable {
   uint32_t entries[4][256];
 };
-constexpr SobolByteTable makeSobolByteTable() {
+constexpr SobolByteTable makeSobolDimension1Reversed() {
   uint32_t v[32] = {};
-  for (uint32_t k = 0, d = 1u << 31; k < 32; ++k, d ^= d >> 1) v[k] = d;
+  for (uint32_t k = 0, d = 1u << 31; k < 32; ++k, d ^= d >> 1) v[k] = reverseBits(d);
   SobolByteTable table{};
   for (int byte = 0; byte < 4; ++byte) {
     for (uint32_t bits = 0; bits < 256; ++bits) {
@@ -73,10 +73,11 @@ constexpr SobolByteTable makeSobolByteTable() {
   }
   return table;
 }
-inline constexpr SobolByteTable kSobolDimension1 = makeSobolByteTable();
+inline constexpr SobolByteTable kSobolDimension1Reversed = makeSobolDimension1Reversed();
 
-inline uint32_t sobolDimension1(uint32_t index) {
-  const auto& t = kSobolDimension1.entries;
+inline uint32_t sobolDimension0Reversed(uint32_t index) { return index; }
+inline uint32_t sobolDimension1Reversed(uint32_t index) {
+  const auto& t = kSobolDimension1Reversed.entries;
   return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu] ^ t[2][(index >> 16) & 0xffu] ^ t[3][index >> 24];
 }
 
@@ -90,14 +91,14 @@ class Sampler {
       : key_(sequence == SampleSequence::Independent
                  ? mix64(mix64(seed + 0x9e3779b97f4a7c15ULL) ^ ((uint64_t(pixelIndex) << 32) | sampleIndex))
                  : mix64(mix64(seed + 0x632be59bd9b4e019ULL) ^ pixelIndex)),  // the same for every sample
-        sampleIndex_(sampleIndex),
+        reversedSampleIndex_(reverseBits(sampleIndex)),
         sequence_(sequence) {}
 
   // Uniform in [0, 1): 24 bits, so the result is never 1.0f.
   float next1D() {
     const uint64_t bits = mix64(key_ + 0x9e3779b97f4a7c15ULL * ++dimension_);
     if (sequence_ == SampleSequence::Independent) return float(bits >> 40) * 0x1.0p-24f;
-    return toUnit(owenScramble(sobolDimension0(shuffledIndex(bits)), uint32_t(bits >> 32)));
+    return toUnit(owenScrambleReversed(sobolDimension0Reversed(shuffledIndex(bits)), uint32_t(bits >> 32)));
   }
 
   Vec2 next2D() {
@@ -107,18 +108,22 @@ class Sampler {
     }
     const uint64_t bits = mix64(key_ + 0x9e3779b97f4a7c15ULL * ++dimension_);
     const uint32_t index = shuffledIndex(bits);
-    return {toUnit(owenScramble(sobolDimension0(index), uint32_t(bits >> 32))),
-            toUnit(owenScramble(sobolDimension1(index), uint32_t(mix64(bits))))};
+    return {toUnit(owenScrambleReversed(sobolDimension0Reversed(index), uint32_t(bits >> 32))),
+            toUnit(owenScrambleReversed(sobolDimension1Reversed(index), uint32_t(mix64(bits))))};
   }
 
  private:
-  static float toUnit(uint32_t fraction) { return float(fraction >> 8) * 0x1.0p-24f; }
-  // The pixel's samples in a random order that keeps every power-of-two
-  // prefix an aligned block of the sequence (so still evenly spread).
-  uint32_t shuffledIndex(uint64_t bits) const { return owenScramble(sampleIndex_, uint32_t(bits)); }
+  // A scrambled fraction, stored bit-reversed, as a float in [0, 1).
+  static float toUnit(uint32_t reversed) { return float(reverseBits(reversed) >> 8) * 0x1.0p-24f; }
+  // The pixel's samples in a random order (the index Owen-scrambled as a
+  // fraction) that keeps every power-of-two prefix an aligned block of the
+  // sequence, so still evenly spread.
+  uint32_t shuffledIndex(uint64_t bits) const {
+    return reverseBits(owenScrambleReversed(reversedSampleIndex_, uint32_t(bits)));
+  }
 
   uint64_t key_;
-  uint32_t sampleIndex_;
+  uint32_t reversedSampleIndex_;
   uint32_t dimension_ = 0;
   SampleSequence sequence_;
 };
