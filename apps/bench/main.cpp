@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
   CLI::App* renderCommand = app.add_subcommand("render", "The grading render of the Cornell box: paths/s and rays/s");
   renderCommand->add_flag("--quick", render.quick, "64 spp instead of 1024 (under 45 s on 2 cores)");
   renderCommand->add_option("--threads", render.threads, "Threads (default: all cores)");
-  renderCommand->add_option("--accel", render.accel, "task3 or fast (default: fast where task 3 is the reference)");
+  renderCommand->add_option("--accel", render.accel, "task3 or fast (default: fast where tasks 2 and 3 are the reference)");
   renderCommand->add_option("--sampler", render.sampler, "sobol (default) or independent");
   renderCommand->add_flag("--json", render.json, "Print one JSON object as the last line");
   pathlab::bench::ConvergeOptions converge;

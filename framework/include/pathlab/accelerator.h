@@ -12,6 +12,7 @@
 #include "pathlab/scene.h"
 #include "pathlab/tasks/bvh.h"
 #include "pathlab/trace.h"
+#include "pathlab/wide_bvh.h"
 
 namespace pathlab {
 
@@ -37,17 +38,18 @@ BvhStatistics bvhStatistics(const Bvh& bvh);
 std::string formatBvhStatistics(const BvhStatistics& statistics);
 
 // How rendering walks task 3's tree: Task3 calls the linked task-3 code
-// (intersectClosest, intersectAny); Fast the framework's SIMD walk of the
-// same tree (fast_traversal.h), which finds the same hits. Fast is the
-// default where task 3 is the reference's; a student's render runs their
-// own traversal.
+// (intersectClosest, intersectAny); Fast collapses the same tree into the
+// framework's 4-wide layout (wide_bvh.h) and tests four boxes and four
+// triangles at a time, with the reference task 2's arithmetic: the same hits.
+// Fast is the default where tasks 2 and 3 are both the reference's; a
+// student's render runs their own code.
 enum class Traversal { Task3, Fast };
 
 std::optional<Traversal> traversalFromName(const std::string& name);
 const char* traversalName(Traversal traversal);
 // The default for a build whose tasks `taskSummary` describes
-// ("1:reference 2:student ...", as CMake records it): Fast only when task 3
-// is the reference.
+// ("1:reference 2:student ...", as CMake records it): Fast only when tasks 2
+// and 3 are the reference.
 Traversal defaultTraversal(const std::string& taskSummary);
 
 class Accelerator final : public RayQueries {
@@ -69,6 +71,7 @@ class Accelerator final : public RayQueries {
   const Scene& scene_;
   Bvh bvh_;
   LeafGeometry geometry_;
+  WideBvh wide_;  // Traversal::Fast only
   Traversal traversal_;
   bool usesBvh_ = false;
   double buildSeconds_ = 0.0;

@@ -1,0 +1,169 @@
+// The render path's 4-wide tree (wide_bvh.h) answers every query exactly as
+// task 3 does over the same binary tree: the same primitive, and t, b1, b2
+// equal to the last bit, or the same blocked/unblocked. Linked with the
+// reference tasks, whose triangle test the packets reproduce lane by lane.
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <string>
+
+#include "meshes.h"
+#include "pathlab/accelerator.h"
+#include "pathlab/procedural.h"
+#include "pathlab/random.h"
+#include "pathlab/scene_io.h"
+#include "pathlab/task_wiring.h"
+#include "pathlab/wide_bvh.h"
+
+using namespace pathlab;
+
+namespace {
+
+bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+bool sameHit(const PrimitiveHit& a, const std::optional<PrimitiveHit>& b) {
+  return b && a.primitive == b->primitive && sameBits(a.t, b->t) && sameBits(a.b1, b->b1) && sameBits(a.b2, b->b2);
+}
+
+// Task 2's answer for one primitive (a slot of its own).
+std::optional<PrimitiveHit> hitOn(const Scene& scene, uint32_t primitive, const Ray& ray, Interval range) {
+  const uint32_t order[] = {primitive};
+  return LeafGeometry(scene, order, kLinkedTasks.primitives).intersect(0, ray, range);
+}
+
+// A flat grid of unit squares, two triangles each, in the plane z = 0: rays
+// along the axes through integer points cross shared edges and vertices
+// exactly, where the watertight test falls back to double precision.
+TriangleMesh grid(int n) {
+  TriangleMesh mesh;
+  for (int y = 0; y <= n; ++y) {
+    for (int x = 0; x <= n; ++x) mesh.positions.push_back(Point3(float(x), float(y), 0.0f));
+  }
+  auto at = [n](int x, int y) { return uint32_t(y * (n + 1) + x); };
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < n; ++x) {
+      mesh.triangles.push_back({at(x, y), at(x + 1, y), at(x + 1, y + 1)});
+      mesh.triangles.push_back({at(x, y), at(x + 1, y + 1), at(x, y + 1)});
+    }
+  }
+  return mesh;
+}
+
+Scene sceneOf(std::vector<TriangleMesh> meshes, std::vector<Sphere> spheres = {}) {
+  Scene scene;
+  scene.materials.push_back(Material{.name = "default"});
+  scene.meshes = std::move(meshes);
+  scene.spheres = std::move(spheres);
+  scene.indexPrimitives();
+  return scene;
+}
+
+// The scenes: tens of thousands of small triangles; spheres among
+// triangles; a grid crossed on its edges, with zero-area and duplicate
+// triangles; a tree that is a single leaf; one triangle.
+std::vector<std::pair<std::string, Scene>> scenes() {
+  std::vector<std::pair<std::string, Scene>> out;
+  out.emplace_back("scan-like mesh", scanLikeScene());
+  out.emplace_back("default box with spheres", defaultScene());
+  TriangleMesh edges = grid(12);
+  edges.positions.push_back(Point3(3.0f, 3.0f, 0.0f));  // a zero-area triangle on the grid
+  edges.triangles.push_back({0, uint32_t(edges.positions.size() - 1), uint32_t(edges.positions.size() - 1)});
+  edges.triangles.push_back(edges.triangles[7]);  // a duplicate: the same t twice
+  out.emplace_back("grid with shared edges",
+                   sceneOf({edges, test::icosphere(2, Point3(6.0f, 6.0f, 2.0f), 1.5f)},
+                           {Sphere{Point3(3.0f, 9.0f, 1.0f), 0.75f}, Sphere{Point3(9.0f, 3.0f, -1.0f), 0.5f}}));
+  out.emplace_back("one leaf", sceneOf({grid(1)}, {Sphere{Point3(0.5f, 0.5f, 2.0f), 0.25f}}));
+  TriangleMesh one;
+  one.positions = {Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0)};
+  one.triangles = {{0, 1, 2}};
+  out.emplace_back("one triangle", sceneOf({one}));
+  return out;
+}
+
+// Rays aimed into the scene's bounds from outside and from inside, with
+// some directions exactly along the axes (slab planes, -0 and +0) and some
+// origins on the grid's integer points (edges hit exactly).
+std::vector<Ray> raysFor(const Scene& scene, int count) {
+  Aabb bounds;
+  for (const Aabb& b : primitiveBounds(scene)) bounds.grow(b.min), bounds.grow(b.max);
+  const Vec3 extent = bounds.extent();
+  Sampler sampler(7, 0, 1);
+  std::vector<Ray> rays;
+  for (int i = 0; i < count; ++i) {
+    const Vec2 u = sampler.next2D(), v = sampler.next2D(), w = sampler.next2D();
+    const Point3 target = bounds.min + Vec3(u.x, u.y, v.x) * extent;
+    Point3 origin = bounds.centroid() + (Vec3(v.y, w.x, w.y) - 0.5f) * 3.0f * glm::max(extent, Vec3(1.0f));
+    if (i % 4 == 1) origin = bounds.min + Vec3(w.x, w.y, u.x) * extent;  // inside the bounds
+    Vec3 direction = target - origin;
+    if (i % 8 == 3) {  // along an axis, from an integer point: exactly on edges and in slab planes
+      origin = glm::floor(origin) + Vec3(0.0f, 0.0f, 0.0f);
+      direction = Vec3(i % 16 == 3 ? -0.0f : 0.0f, 0.0f, origin.z > 0.0f ? -1.0f : 1.0f);
+    }
+    if (i % 8 == 5) {  // along an axis, lying in a plane of the scene's bounding box (0 * inf = NaN in slab tests)
+      const int along = (i / 8) % 3, in = (along + 1 + (i / 24) % 2) % 3;
+      origin = target;
+      origin[along] = bounds.min[along] - 1.0f;
+      origin[in] = (i / 48) % 2 ? bounds.max[in] : bounds.min[in];
+      direction = Vec3((i / 96) % 2 ? -0.0f : 0.0f);
+      direction[along] = 1.0f;
+    }
+    if (glm::dot(direction, direction) == 0.0f) direction = Vec3(0.0f, 0.0f, 1.0f);
+    rays.push_back(Ray{origin, glm::normalize(direction)});
+  }
+  return rays;
+}
+
+}  // namespace
+
+TEST_CASE("wide BVH: the same closest hit as task 3, to the last bit, and the same blocked rays") {
+  for (auto& [name, scene] : scenes()) {
+    CAPTURE(name);
+    const std::vector<Aabb> bounds = primitiveBounds(scene);
+    const Bvh bvh = buildBvh(bounds);
+    REQUIRE(validateBvh(bvh, scene.primitives.size(), &bounds).empty());
+    const LeafGeometry geometry(scene, bvh.primitives, kLinkedTasks.primitives);
+    const WideBvh wide(scene, bvh, kLinkedTasks.primitives);
+    size_t hits = 0, blocked = 0, differences = 0, ties = 0;
+    const std::vector<Ray> rays = raysFor(scene, 20000);
+    for (size_t i = 0; i < rays.size(); ++i) {
+            // Unbounded; ending or starting exactly at the first hit (as a shadow
+      // ray to a surface does); and ranges that cut through the scene.
+      Interval range = i % 3 == 0 ? Interval{0.0f, kInfinity} : Interval{0.01f * float(i % 7), 0.5f + float(i % 11)};
+      if (i % 3 == 1) {
+        if (auto first = intersectClosest(bvh, geometry, rays[i], {0.0f, kInfinity})) {
+          range = i % 2 ? Interval{0.0f, first->t} : Interval{first->t, kInfinity};
+        }
+      }
+      const auto expected = intersectClosest(bvh, geometry, rays[i], range);
+      const auto actual = wide.intersectClosest(rays[i], range);
+      bool same = expected.has_value() == actual.has_value() &&
+                  (!expected || (expected->primitive == actual->primitive && sameHit(*expected, *actual)));
+      if (!same && expected && actual && sameBits(expected->t, actual->t)) {
+        // A tie: the ray crosses a shared edge or vertex, or a duplicate, at
+        // the same t; either primitive is right if task 2 agrees it is hit there.
+        same = sameHit(*actual, *hitOn(scene, actual->primitive, rays[i], range));
+        ties += same;
+      }
+      const bool expectedBlocked = intersectAny(bvh, geometry, rays[i], range);
+      differences += !same + (expectedBlocked != wide.intersectAny(rays[i], range));
+      hits += expected.has_value();
+      blocked += expectedBlocked;
+    }
+    CHECK(differences == 0);
+    if (ties) MESSAGE(name, ": ", ties, " rays through shared edges or vertices found another triangle at the same t");
+    CHECK(hits > rays.size() / 10);  // the rays do reach the geometry
+    CHECK(blocked == hits);          // (with the same ranges, a closest hit exists iff something blocks)
+  }
+}
+
+TEST_CASE("wide BVH: an empty tree hits nothing; the layout packs four triangles per packet") {
+  const WideBvh empty;
+  CHECK_FALSE(empty.intersectClosest(Ray{Point3(0.0f), Vec3(0, 0, 1)}, {}));
+  CHECK_FALSE(empty.intersectAny(Ray{Point3(0.0f), Vec3(0, 0, 1)}, {}));
+  const Scene scene = scanLikeScene();
+  const Bvh bvh = buildBvh(primitiveBounds(scene));
+  const WideBvh wide(scene, bvh, kLinkedTasks.primitives);
+  CHECK(wide.nodeCount() < bvh.nodes.size() / 2);
+  CHECK(wide.packetCount() >= scene.triangleCount() / 4);
+  CHECK(wide.laneOccupancy() > 0.6);
+}
