@@ -64,6 +64,10 @@ Strategy strategy(const std::string& name) {
     s.options.sampler = SampleSequence::Independent;
     s.tasks = {4, 5};
     s.change = "independent samples instead of Owen-scrambled Sobol ones (the framework's sampler, --sampler independent)";
+  } else if (name == "stratified") {
+    s.options.sampler = SampleSequence::Stratified;
+    s.tasks = {4, 5};
+    s.change = "jittered strata instead of Owen-scrambled Sobol points (the framework's sampler, --sampler stratified)";
   } else if (name == "mis-balance") {
     frameworkStrategy({.mis = MisHeuristic::Balance}, "MIS of light and BSDF samples, balance heuristic");
   } else if (name == "mis-power") {
@@ -71,7 +75,7 @@ Strategy strategy(const std::string& name) {
   } else {
     throw Error("--strategies: unknown strategy \"" + name +
                 "\" (reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, mis-balance, mis-power, env-importance, "
-                "env-uniform, independent)");
+                "env-uniform, independent, stratified)");
   }
   return s;
 }

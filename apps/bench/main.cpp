@@ -1,6 +1,7 @@
 // pathlab-bench: benchmarks that print numbers (never timed unit tests).
 //   pathlab-bench bvh [MESH.obj | --triangles N] [--threads N] [--json]
-//   pathlab-bench render [--quick] [--threads N] [--accel task3|fast] [--sampler sobol|independent] [--json]
+//   pathlab-bench render [--scene FILE] [--quick | --spp N] [--threads N] [--accel task3|fast]
+//                        [--sampler sobol|stratified|independent] [--json]
 //   pathlab-bench converge SCENE [--strategies a,b] [--budget SECONDS] [--out DIR] [--json]
 #include <CLI/CLI.hpp>
 
@@ -21,17 +22,19 @@ int main(int argc, char** argv) {
   bvhCommand->add_flag("--json", bvh.json, "Print one JSON object as the last line");
   bvhCommand->add_option("--triangles", bvh.triangles, "Use a generated mesh of about N triangles (scaling)");
   pathlab::bench::RenderBenchOptions render;
-  CLI::App* renderCommand = app.add_subcommand("render", "The grading render of the Cornell box: paths/s and rays/s");
+  CLI::App* renderCommand = app.add_subcommand("render", "The grading render (the Cornell box, or --scene): paths/s, rays/s, ray-query share");
   renderCommand->add_flag("--quick", render.quick, "64 spp instead of 1024 (under 45 s on 2 cores)");
   renderCommand->add_option("--threads", render.threads, "Threads (default: all cores)");
   renderCommand->add_option("--accel", render.accel, "task3 or fast (default: fast where tasks 2 and 3 are the reference)");
-  renderCommand->add_option("--sampler", render.sampler, "sobol (default) or independent");
+  renderCommand->add_option("--sampler", render.sampler, "sobol (default), stratified or independent");
+  renderCommand->add_option("--scene", render.scene, "Scene file (default: the built-in Cornell box)");
+  renderCommand->add_option("--spp", render.spp, "Samples per pixel (default: 1024, or 64 with --quick)");
   renderCommand->add_flag("--json", render.json, "Print one JSON object as the last line");
   pathlab::bench::ConvergeOptions converge;
   CLI::App* convergeCommand = app.add_subcommand(
       "converge", "Error against time for sampling strategies (those the linked task code ignores: unavailable)");
   convergeCommand->add_option("scene", converge.scene, "Scene file")->required();
-  convergeCommand->add_option("--strategies", converge.strategies, "Comma-separated: reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, mis-balance, mis-power, env-importance, env-uniform, independent");
+  convergeCommand->add_option("--strategies", converge.strategies, "Comma-separated: reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, mis-balance, mis-power, env-importance, env-uniform, independent, stratified");
   convergeCommand->add_option("--budget", converge.budgetSeconds, "Render seconds per strategy (default 60)");
   convergeCommand->add_option("--out", converge.outDir, "Output folder for the CSV and the cached reference");
   convergeCommand->add_option("--reference-spp", converge.referenceSpp, "Samples per pixel of the reference");

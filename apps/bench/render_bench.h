@@ -1,5 +1,6 @@
-// `pathlab-bench render`: the course's grading render of the Cornell box,
-// timed: paths per second and rays per second.
+// `pathlab-bench render`: the course's grading render (the Cornell box, or
+// --scene FILE), timed: paths per second, rays per second, and the share of
+// the time spent answering ray queries.
 #pragma once
 
 #include <string>
@@ -12,6 +13,8 @@ struct RenderBenchOptions {
   int threads = 0;     // 0: all cores
   std::string accel;   // "task3" or "fast"; empty: the CLI's default (defaultTraversal)
   std::string sampler = "sobol";  // or "independent"
+  std::string scene;              // a scene file; empty: the built-in Cornell box
+  int spp = 0;                    // 0: 1024, or 64 with quick
 };
 
 int runRenderBench(const RenderBenchOptions& options);

@@ -139,7 +139,7 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
     options.traversal = *traversal;
   }
   const std::optional<SampleSequence> sampler = sampleSequenceFromName(args.sampler);
-  if (!sampler) throw Error("--sampler: unknown sampler " + inQuotes(args.sampler) + " (independent, sobol)");
+  if (!sampler) throw Error("--sampler: unknown sampler " + inQuotes(args.sampler) + " (sobol, stratified, independent)");
   options.sampler = *sampler;
   checkOutputPath(args.output);
   std::optional<Image> reference;  // read and checked before an hour of rendering, not after
@@ -255,7 +255,8 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel, std::atomic<b
                  "are the reference");
   app.add_option("--sampler", render.sampler,
                  "Random numbers: sobol (default: Owen-scrambled Sobol points per pixel, less error for the same "
-                 "samples) or independent (plain Monte Carlo)");
+                 "samples), stratified (one jittered sample per cell, per dimension) or independent (plain Monte "
+                 "Carlo)");
   app.add_flag("-q,--quiet", render.quiet, "No progress bar or summary");
 
   DebugArgs debug;

@@ -12,8 +12,9 @@ Bsdf::Bsdf(const Material& material, const Hit& hit, const Vec3& wo, const BsdfL
   Vec3 n = side * hit.shadingNormal;
   if (glm::dot(n, geometricNormal_) <= 0.0f) n = geometricNormal_;  // a shading normal past the horizon
   frame_ = Frame::fromNormal(n);
-  // Glass needs to know inside from outside: the frame of the outward normal.
-  outwardFrame_ = Frame::fromNormal(side * n);
+  // Glass needs to know inside from outside: the frame of the outward normal
+  // (made only for glass: a diffuse hit, the common case, never reads it).
+  if (material.type == MaterialType::Glass) outwardFrame_ = side > 0.0f ? frame_ : Frame::fromNormal(-n);
 }
 
 Color Bsdf::f(const Vec3& wo, const Vec3& wi) const {

@@ -15,7 +15,9 @@ AreaLight AreaLight::fromMesh(const Scene& scene, uint32_t mesh) {
   light.radiance_ = scene.materials[m.material].emission;
   std::vector<float> areas;
   for (const glm::uvec3& t : m.triangles) {
-    areas.push_back(0.5f * glm::length(glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x])));
+    const Vec3 cross = glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]);
+    areas.push_back(0.5f * glm::length(cross));
+    light.normals_.push_back(glm::normalize(cross));
   }
   light.triangles_ = Distribution1D(areas);
   light.area_ = float(light.triangles_.total());
@@ -52,7 +54,7 @@ AreaSample AreaLight::sample(Vec2 u) const {
   const float root = std::sqrt(ux);
   const float b1 = root * (1.0f - u.y), b2 = root * u.y;
   result.point = (1.0f - b1 - b2) * p0 + b1 * p1 + b2 * p2;
-  result.normal = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+  result.normal = normals_[i];
   return result;
 }
 

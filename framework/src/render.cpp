@@ -33,12 +33,13 @@ const char* integratorName(Integrator integrator) {
 
 std::optional<SampleSequence> sampleSequenceFromName(const std::string& name) {
   if (name == "independent") return SampleSequence::Independent;
+  if (name == "stratified") return SampleSequence::Stratified;
   if (name == "sobol") return SampleSequence::Sobol;
   return std::nullopt;
 }
 
 const char* sampleSequenceName(SampleSequence sequence) {
-  return sequence == SampleSequence::Sobol ? "sobol" : "independent";
+  return sequence == SampleSequence::Sobol ? "sobol" : sequence == SampleSequence::Stratified ? "stratified" : "independent";
 }
 
 Color estimateRadiance(TraceContext& context, const RenderOptions& options, const Ray& ray, Sampler& sampler) {
@@ -73,7 +74,8 @@ Color estimateRadiance(TraceContext& context, const RenderOptions& options, cons
 }
 
 Sampler pixelSampler(const RenderSettings& settings, IVec2 pixel, uint32_t sample, SampleSequence sequence) {
-  return Sampler(uint32_t(pixel.y) * uint32_t(settings.width) + uint32_t(pixel.x), sample, settings.seed, sequence);
+  return Sampler(uint32_t(pixel.y) * uint32_t(settings.width) + uint32_t(pixel.x), sample, settings.seed, sequence,
+                 uint32_t(settings.samplesPerPixel));
 }
 
 Color estimatePixelSample(TraceContext& context, const RenderOptions& options, const CameraBasis& basis,

@@ -17,6 +17,10 @@ build configuration, so CTest's build (all reference by default) checks the
 probe through env-uniform, and the stub case runs when this script is given
 such a build's pathlab-bench.
 
+render --scene FILE --json with Sobol and stratified samples: it runs, the
+JSON describes the run, and the ray-query share is a fraction; a missing
+scene file is one clear error and a non-zero exit.
+
 usage: check_bvh_bench.py PATHLAB-BENCH [--skip-bvh]"""
 import csv
 import json
@@ -98,7 +102,7 @@ if "--skip-bvh" not in sys.argv:
                   f"bvh: the table's columns are not labelled {label!r}")
 
 # ---- converge ----------------------------------------------------------------
-strategies = ["reference", *TASK5_STRATEGIES, "env-uniform"]
+strategies = ["reference", *TASK5_STRATEGIES, "env-uniform", "stratified"]
 with tempfile.TemporaryDirectory(prefix="pathlab-bench-converge-") as tmp:
     scene = json.load(open(os.path.join(SOURCE, "media", "scenes", "cornell-spheres.json")))
     scene["render"].update(width=64, height=48)
@@ -153,6 +157,24 @@ with tempfile.TemporaryDirectory(prefix="pathlab-bench-converge-") as tmp:
             check(flags == {"true" if s["available"] else "false"}, f"converge {name}: CSV available {flags}")
             if not s["available"]:
                 check(len(mine) == 1 and mine[0]["reason"] == s["reason"], f"converge {name}: CSV reason")
+
+# ---- render ------------------------------------------------------------------
+with tempfile.TemporaryDirectory(prefix="pathlab-bench-render-") as tmp:
+    scene_path = os.path.join(SOURCE, "media", "scenes", "cornell-mirror-glass.json")
+    for sampler in ("sobol", "stratified"):
+        out = run(["render", "--scene", scene_path, "--spp", "2", "--threads", "2", "--sampler", sampler, "--json"], 300)
+        if check(out.returncode == 0, f"render --sampler {sampler}: pathlab-bench exited with {out.returncode}"):
+            result = json.loads(out.stdout.strip().splitlines()[-1])
+            check(result.get("scene") == scene_path and result.get("spp") == 2 and result.get("sampler") == sampler,
+                  f"render: the JSON does not describe the run: {result}")
+            share = result.get("ray_query_share", -1)
+            check(0.0 < share < 1.0, f"render: ray-query share {share} is not a fraction")
+            check(re.search(r"^ray queries .*: \d+ % of the time", out.stdout, re.M) is not None,
+                  "render: no line with the ray-query share")
+    missing = os.path.join(tmp, "no-such-scene.json")
+    out = run(["render", "--scene", missing, "--spp", "1"], 60)
+    check(out.returncode != 0 and "no-such-scene.json" in out.stderr and "Traceback" not in out.stderr,
+          f"render --scene of a missing file: exit {out.returncode}, stderr {out.stderr[-200:]!r}")
 
 for f in failures:
     print("FAIL:", f)

@@ -40,6 +40,7 @@ class AreaLight {
   Color radiance_{0.0f};
   float area_ = 0.0f;
   Distribution1D triangles_;  // by area
+  std::vector<Vec3> normals_;  // each triangle's unit normal, made once rather than per sample
 };
 
 enum class EnvironmentSampling { Importance, Uniform };
