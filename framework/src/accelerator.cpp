@@ -145,7 +145,7 @@ Accelerator::Accelerator(const Scene& scene, Traversal traversal) : scene_(scene
   }
   geometry_ = LeafGeometry(scene, bvh_.primitives, kLinkedTasks.primitives);
   if (traversal_ == Traversal::Fast) {
-    wide_ = WideBvh(scene, bvh_, kLinkedTasks.primitives);
+    wide_ = WideBvh(bvh_, geometry_, kLinkedTasks.primitives);
     buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   usesBvh_ = true;

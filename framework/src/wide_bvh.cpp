@@ -157,7 +157,7 @@ bool leafHits(const WideBvh::Leaf& leaf, const std::vector<WideBvh::TrianglePack
 
 }  // namespace
 
-WideBvh::WideBvh(const Scene& scene, const Bvh& bvh, const PrimitiveTests& tests) : tests_(tests) {
+WideBvh::WideBvh(const Bvh& bvh, const LeafGeometry& geometry, const PrimitiveTests& tests) : tests_(tests) {
   if (bvh.nodes.empty()) return;
   // Primitives below each node (children come after their parents).
   std::vector<uint32_t> below(bvh.nodes.size());
@@ -175,11 +175,11 @@ WideBvh::WideBvh(const Scene& scene, const Bvh& bvh, const PrimitiveTests& tests
       root.bounds[axis][0] = bvh.nodes[0].bounds.min[axis];
       root.bounds[axis + 3][0] = bvh.nodes[0].bounds.max[axis];
     }
-    root.child[0] = kLeaf | addLeaf(scene, bvh, 0);
+    root.child[0] = kLeaf | addLeaf(bvh, geometry, 0);
     root.count = 1;
     return;
   }
-  collapse(scene, bvh, below, 0, 0);
+  collapse(bvh, geometry, below, 0, 0);
 }
 
 // Wide node `wide` takes the place of binary interior node `binary`: start
@@ -187,8 +187,8 @@ WideBvh::WideBvh(const Scene& scene, const Bvh& bvh, const PrimitiveTests& tests
 // are four (the surface area says which box rays reach most often). A
 // subtree of at most four primitives becomes one leaf, so its triangles fill
 // one packet instead of several half-empty ones.
-void WideBvh::collapse(const Scene& scene, const Bvh& bvh, const std::vector<uint32_t>& below, uint32_t wide,
-                       uint32_t binary) {
+void WideBvh::collapse(const Bvh& bvh, const LeafGeometry& geometry, const std::vector<uint32_t>& below,
+                       uint32_t wide, uint32_t binary) {
   auto opens = [&](uint32_t n) { return !bvh.nodes[n].isLeaf() && below[n] > kPacketSize; };
   std::array<uint32_t, 4> children{bvh.nodes[binary].leftOrFirst, bvh.nodes[binary].leftOrFirst + 1};
   uint32_t count = 2;
@@ -216,25 +216,24 @@ void WideBvh::collapse(const Scene& scene, const Bvh& bvh, const std::vector<uin
       node.child[k] = uint32_t(nodes_.size());
       nodes_.emplace_back();
     } else {
-      node.child[k] = kLeaf | addLeaf(scene, bvh, children[k]);
+      node.child[k] = kLeaf | addLeaf(bvh, geometry, children[k]);
     }
   }
   nodes_[wide] = node;
   for (uint32_t k = 0; k < count; ++k) {
-    if (!(node.child[k] & kLeaf)) collapse(scene, bvh, below, node.child[k], children[k]);
+    if (!(node.child[k] & kLeaf)) collapse(bvh, geometry, below, node.child[k], children[k]);
   }
 }
 
 // One leaf holding every primitive below binary node `subtree`, in the
-// order task 3's leaves list them.
-uint32_t WideBvh::addLeaf(const Scene& scene, const Bvh& bvh, uint32_t subtree) {
+// order task 3's leaves list them (read from `geometry`, which holds them in
+// that order: one pass through memory, no lookups in the scene).
+uint32_t WideBvh::addLeaf(const Bvh& bvh, const LeafGeometry& geometry, uint32_t subtree) {
   Leaf out{uint32_t(packets_.size()), 0, uint32_t(spheres_.size()), 0};
   int lane = kPacketSize;
-  auto add = [&](uint32_t primitive) {
-    const PrimitiveRef& ref = scene.primitives[primitive];
-    if (ref.isSphere()) {
-      const Sphere& sphere = scene.spheres[ref.index];
-      spheres_.push_back({sphere.center, sphere.radius, primitive});
+  auto add = [&](const LeafGeometry::Slot& slot) {
+    if (slot.isSphere) {
+      spheres_.push_back({slot.a, slot.b.x, slot.primitive});
       ++out.sphereCount;
       return;
     }
@@ -244,19 +243,18 @@ uint32_t WideBvh::addLeaf(const Scene& scene, const Bvh& bvh, uint32_t subtree) 
       lane = 0;
     }
     TrianglePacket& packet = packets_.back();
-    const TriangleMesh& mesh = scene.meshes[ref.mesh];
-    const glm::uvec3& v = mesh.triangles[ref.index];
-    const Point3 p[3] = {mesh.positions[v.x], mesh.positions[v.y], mesh.positions[v.z]};
+    const Point3 p[3] = {slot.a, slot.b, slot.c};
     for (int k = 0; k < 3; ++k) {
       for (int axis = 0; axis < 3; ++axis) packet.vertex[k][axis][lane] = p[k][axis];
     }
-    packet.primitive[lane] = primitive;
+    packet.primitive[lane] = slot.primitive;
     // A zero-area triangle has no normal, and the reference never reports a hit on it.
     const Vec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
     if (n.x != 0.0f || n.y != 0.0f || n.z != 0.0f) packet.lanes |= 1u << lane;
     ++lane;
   };
-  std::array<uint32_t, kMaxBvhDepth + 1> stack{subtree};
+  uint32_t stack[kMaxBvhDepth + 1];  // not zeroed: only [0, size) is read
+  stack[0] = subtree;
   for (int size = 1; size > 0;) {
     const BvhNode& node = bvh.nodes[stack[--size]];
     if (!node.isLeaf()) {
@@ -264,7 +262,7 @@ uint32_t WideBvh::addLeaf(const Scene& scene, const Bvh& bvh, uint32_t subtree) 
       stack[size++] = node.leftOrFirst;
       continue;
     }
-    for (uint32_t slot = node.leftOrFirst; slot < node.leftOrFirst + node.count; ++slot) add(bvh.primitives[slot]);
+    for (uint32_t slot = node.leftOrFirst; slot < node.leftOrFirst + node.count; ++slot) add(geometry.slot(slot));
   }
   leaves_.push_back(out);
   return uint32_t(leaves_.size() - 1);

@@ -122,7 +122,7 @@ TEST_CASE("wide BVH: the same closest hit as task 3, to the last bit, and the sa
     const Bvh bvh = buildBvh(bounds);
     REQUIRE(validateBvh(bvh, scene.primitives.size(), &bounds).empty());
     const LeafGeometry geometry(scene, bvh.primitives, kLinkedTasks.primitives);
-    const WideBvh wide(scene, bvh, kLinkedTasks.primitives);
+    const WideBvh wide(bvh, geometry, kLinkedTasks.primitives);
     size_t hits = 0, blocked = 0, differences = 0, ties = 0;
     const std::vector<Ray> rays = raysFor(scene, 20000);
     for (size_t i = 0; i < rays.size(); ++i) {
@@ -162,7 +162,7 @@ TEST_CASE("wide BVH: an empty tree hits nothing; the layout packs four triangles
   CHECK_FALSE(empty.intersectAny(Ray{Point3(0.0f), Vec3(0, 0, 1)}, {}));
   const Scene scene = scanLikeScene();
   const Bvh bvh = buildBvh(primitiveBounds(scene));
-  const WideBvh wide(scene, bvh, kLinkedTasks.primitives);
+  const WideBvh wide(bvh, LeafGeometry(scene, bvh.primitives, kLinkedTasks.primitives), kLinkedTasks.primitives);
   CHECK(wide.nodeCount() < bvh.nodes.size() / 2);
   CHECK(wide.packetCount() >= scene.triangleCount() / 4);
   CHECK(wide.laneOccupancy() > 0.6);

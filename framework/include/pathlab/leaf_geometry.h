@@ -40,7 +40,19 @@ class LeafGeometry {
   // Slot i holds scene primitive order[i]; `tests` are task 2's (kLinkedTasks.primitives).
   LeafGeometry(const Scene& scene, std::span<const uint32_t> order, const PrimitiveTests& tests);
 
+  // 48 bytes: a triangle's three vertices, or a sphere's centre (a) and radius (b.x).
+  struct Slot {
+    Point3 a;            // 12
+    uint32_t primitive;  //  4: index into Scene::primitives
+    Point3 b;            // 12
+    uint32_t isSphere;   //  4
+    Point3 c;            // 12
+    uint32_t unused;     //  4
+  };
+  static_assert(sizeof(Slot) == 48);
+
   uint32_t size() const { return uint32_t(slots_.size()); }
+  const Slot& slot(uint32_t i) const { return slots_[i]; }
 
   // The debugger's record of a traversal: when set, every slot tested is
   // appended in the order the traversal tests it.
@@ -55,16 +67,6 @@ class LeafGeometry {
   }
 
  private:
-  // 48 bytes: a triangle's three vertices, or a sphere's centre (a) and radius (b.x).
-  struct Slot {
-    Point3 a;            // 12
-    uint32_t primitive;  //  4: index into Scene::primitives
-    Point3 b;            // 12
-    uint32_t isSphere;   //  4
-    Point3 c;            // 12
-    uint32_t unused;     //  4
-  };
-  static_assert(sizeof(Slot) == 48);
   std::vector<Slot> slots_;
   PrimitiveTests tests_;
   std::vector<uint32_t>* testLog_ = nullptr;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "pathlab/hit.h"
+#include "pathlab/leaf_geometry.h"
 #include "pathlab/scene.h"
 #include "pathlab/task_functions.h"
 #include "pathlab/tasks/bvh.h"
@@ -24,8 +25,10 @@ namespace pathlab {
 class WideBvh {
  public:
   WideBvh() = default;
-  // `tests` are task 2's (kLinkedTasks.primitives), for spheres and edge cases.
-  WideBvh(const Scene& scene, const Bvh& bvh, const PrimitiveTests& tests);
+  // `geometry` holds `bvh`'s primitives in leaf order (LeafGeometry(scene,
+  // bvh.primitives, ...)); `tests` are task 2's (kLinkedTasks.primitives),
+  // for spheres and edge cases.
+  WideBvh(const Bvh& bvh, const LeafGeometry& geometry, const PrimitiveTests& tests);
 
   // The same answers as task 3's intersectClosest / intersectAny over `bvh`.
   std::optional<PrimitiveHit> intersectClosest(const Ray& ray, Interval range) const;
@@ -64,9 +67,9 @@ class WideBvh {
   static constexpr int kPacketSize = 4;
 
  private:
-  void collapse(const Scene& scene, const Bvh& bvh, const std::vector<uint32_t>& below, uint32_t wide,
+  void collapse(const Bvh& bvh, const LeafGeometry& geometry, const std::vector<uint32_t>& below, uint32_t wide,
                 uint32_t binary);
-  uint32_t addLeaf(const Scene& scene, const Bvh& bvh, uint32_t subtree);
+  uint32_t addLeaf(const Bvh& bvh, const LeafGeometry& geometry, uint32_t subtree);
 
   std::vector<Node> nodes_;
   std::vector<TrianglePacket> packets_;
