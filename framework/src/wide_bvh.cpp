@@ -1,11 +1,23 @@
-// The render path's 4-wide tree (wide_bvh.h): built by collapsing task 3's
-// binary tree, walked with four box tests and four triangle tests at a time.
+// The render path's 8-wide tree (wide_bvh.h): built by collapsing task 3's
+// binary tree, walked with eight box tests and four triangle tests at a time.
 #include "pathlab/wide_bvh.h"
 
 #include <array>
 #include <bit>
 
 #include "lanes.h"
+
+// The AVX2 box tests are compiled in on x86-64 (GCC and Clang) and chosen at
+// run time, so one binary runs on any x86-64 CPU.
+#if defined(__x86_64__) && defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
+#define PATHLAB_WIDE_BVH_AVX2 1
+#else
+#define PATHLAB_WIDE_BVH_AVX2 0
+#endif
+
+#if PATHLAB_WIDE_BVH_AVX2
+#include <immintrin.h>
+#endif
 #include "pathlab/leaf_geometry.h"
 
 namespace pathlab {
@@ -23,8 +35,8 @@ float surfaceArea(const Aabb& box) {
 // 1/direction, one more rounding, so 2 gamma(4).
 constexpr float kWidenExit = 1.0f + 2.0f * (4.0f * 0x1.0p-24f) / (1.0f - 4.0f * 0x1.0p-24f);
 
-// A wide traversal stacks at most three children per level of task 3's tree.
-constexpr int kStackSize = 3 * int(kMaxBvhDepth) + 1;
+// A wide traversal stacks at most kWidth - 1 children per level of task 3's tree.
+constexpr int kStackSize = (WideBvh::kWidth - 1) * int(kMaxBvhDepth) + 1;
 
 // Per ray, once: the slab test's constants, and the watertight triangle
 // test's permutation and shear (the reference task 2, pbrt-v4 section 6.5.3).
@@ -54,22 +66,61 @@ struct RayLanes {
   }
 };
 
-// Entry t of each child box within [tMin, tMax] into `entry`; returns the
-// mask of children hit. A ray lying in a slab plane gives 0 * inf = NaN,
-// which min/max pass over (lanes.h): that axis sets no limit.
-// (Inlined by force here and below: out of line they cost 5 % of the speed.)
-[[gnu::always_inline]] inline int childEntries(const WideBvh::Node& node, const RayLanes& r, float tMin, float tMax,
-                                               float* entry) {
-  F4 near = lanes::splat(tMin), far = lanes::splat(tMax);
-  for (int axis = 0; axis < 3; ++axis) {
-    const F4 tNear = (lanes::load(node.bounds[r.nearBound[axis]]) - r.origin[axis]) * r.inverseDirection[axis];
-    const F4 tFar = (lanes::load(node.bounds[r.farBound[axis]]) - r.origin[axis]) * r.widenedInverse[axis];
-    near = lanes::max(tNear, near);
-    far = lanes::min(tFar, far);
+// The box tests of one node: the entry t of each child box within
+// [tMin, tMax] into `entry`, and the mask of children hit. A ray lying in a
+// slab plane gives 0 * inf = NaN, which min/max pass over (lanes.h): that
+// axis sets no limit. Two versions with the same arithmetic, so the same
+// answers: four boxes per instruction (SSE2, or plain code elsewhere), and
+// eight (AVX2, where the CPU has it; see WideBvh::Instructions).
+struct BaselineBoxes {
+  const RayLanes& r;
+  int operator()(const WideBvh::Node& node, float tMin, float tMax, float* entry) const {
+    int mask = 0;
+    for (int half = 0; half < WideBvh::kWidth; half += 4) {
+      F4 near = lanes::splat(tMin), far = lanes::splat(tMax);
+      for (int axis = 0; axis < 3; ++axis) {
+        const F4 tNear =
+            (lanes::load(node.bounds[r.nearBound[axis]] + half) - r.origin[axis]) * r.inverseDirection[axis];
+        const F4 tFar =
+            (lanes::load(node.bounds[r.farBound[axis]] + half) - r.origin[axis]) * r.widenedInverse[axis];
+        near = lanes::max(tNear, near);
+        far = lanes::min(tFar, far);
+      }
+      lanes::store(entry + half, near);
+      mask |= (near <= far) << half;
+    }
+    return mask & ((1 << node.count) - 1);
   }
-  lanes::store(entry, near);
-  return (near <= far) & ((1 << node.count) - 1);
-}
+};
+
+#if PATHLAB_WIDE_BVH_AVX2
+static_assert(WideBvh::kWidth == 8);
+struct Avx2Boxes {
+  const RayLanes& r;
+  __m256 origin[3], inverseDirection[3], widenedInverse[3];
+
+  [[gnu::target("avx2")]] explicit Avx2Boxes(const RayLanes& lanes) : r(lanes) {
+    for (int axis = 0; axis < 3; ++axis) {
+      origin[axis] = _mm256_set_m128(r.origin[axis].v, r.origin[axis].v);
+      inverseDirection[axis] = _mm256_set_m128(r.inverseDirection[axis].v, r.inverseDirection[axis].v);
+      widenedInverse[axis] = _mm256_set_m128(r.widenedInverse[axis].v, r.widenedInverse[axis].v);
+    }
+  }
+  [[gnu::target("avx2")]] int operator()(const WideBvh::Node& node, float tMin, float tMax, float* entry) const {
+    __m256 near = _mm256_set1_ps(tMin), far = _mm256_set1_ps(tMax);
+    for (int axis = 0; axis < 3; ++axis) {
+      const __m256 tNear = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.bounds[r.nearBound[axis]]), origin[axis]),
+                                         inverseDirection[axis]);
+      const __m256 tFar = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.bounds[r.farBound[axis]]), origin[axis]),
+                                        widenedInverse[axis]);
+      near = _mm256_max_ps(tNear, near);  // as lanes::max: NaN in tNear keeps the running limit
+      far = _mm256_min_ps(tFar, far);
+    }
+    _mm256_store_ps(entry, near);
+    return _mm256_movemask_ps(_mm256_cmp_ps(near, far, _CMP_LE_OQ)) & ((1 << node.count) - 1);
+  }
+};
+#endif
 
 // The four lanes of a packet through the reference's watertight test, in its
 // order of operations (so each lane's t, b1, b2 are bit-identical to it).
@@ -157,7 +208,14 @@ bool leafHits(const WideBvh::Leaf& leaf, const std::vector<WideBvh::TrianglePack
 
 }  // namespace
 
-WideBvh::WideBvh(const Bvh& bvh, const LeafGeometry& geometry, const PrimitiveTests& tests) : tests_(tests) {
+WideBvh::WideBvh(const Bvh& bvh, const LeafGeometry& geometry, const PrimitiveTests& tests,
+                 Instructions instructions)
+    : tests_(tests) {
+#if PATHLAB_WIDE_BVH_AVX2
+  avx2_ = instructions == Instructions::Best && __builtin_cpu_supports("avx2");
+#else
+  (void)instructions;
+#endif
   if (bvh.nodes.empty()) return;
   // Primitives below each node (children come after their parents).
   std::vector<uint32_t> below(bvh.nodes.size());
@@ -184,25 +242,30 @@ WideBvh::WideBvh(const Bvh& bvh, const LeafGeometry& geometry, const PrimitiveTe
 
 // Wide node `wide` takes the place of binary interior node `binary`: start
 // from its two children and open the largest interior child until there
-// are four (the surface area says which box rays reach most often). A
+// are kWidth (the surface area says which box rays reach most often). A
 // subtree of at most four primitives becomes one leaf, so its triangles fill
 // one packet instead of several half-empty ones.
 void WideBvh::collapse(const Bvh& bvh, const LeafGeometry& geometry, const std::vector<uint32_t>& below,
                        uint32_t wide, uint32_t binary) {
   auto opens = [&](uint32_t n) { return !bvh.nodes[n].isLeaf() && below[n] > kPacketSize; };
-  std::array<uint32_t, 4> children{bvh.nodes[binary].leftOrFirst, bvh.nodes[binary].leftOrFirst + 1};
-  uint32_t count = 2;
-  while (count < 4) {
-    int largest = -1;
-    float largestArea = -1.0f;
-    for (uint32_t k = 0; k < count; ++k) {
-      const float area = surfaceArea(bvh.nodes[children[k]].bounds);
-      if (opens(children[k]) && area > largestArea) largest = int(k), largestArea = area;
+  std::array<uint32_t, kWidth> children;
+  std::array<float, kWidth> openArea;  // surface area of a child that can be opened, else -1
+  uint32_t count = 0;
+  auto addChild = [&](uint32_t k, uint32_t n) {
+    children[k] = n;
+    openArea[k] = opens(n) ? surfaceArea(bvh.nodes[n].bounds) : -1.0f;
+  };
+  addChild(count++, bvh.nodes[binary].leftOrFirst);
+  addChild(count++, bvh.nodes[binary].leftOrFirst + 1);
+  while (count < kWidth) {
+    uint32_t largest = 0;
+    for (uint32_t k = 1; k < count; ++k) {
+      if (openArea[k] > openArea[largest]) largest = k;
     }
-    if (largest < 0) break;
+    if (openArea[largest] < 0.0f) break;
     const uint32_t opened = bvh.nodes[children[largest]].leftOrFirst;
-    children[largest] = opened;
-    children[count++] = opened + 1;
+    addChild(largest, opened);
+    addChild(count++, opened + 1);
   }
   Node node{};
   node.count = count;
@@ -212,7 +275,7 @@ void WideBvh::collapse(const Bvh& bvh, const LeafGeometry& geometry, const std::
       node.bounds[axis][k] = child.bounds.min[axis];
       node.bounds[axis + 3][k] = child.bounds.max[axis];
     }
-    if (opens(children[k])) {
+    if (openArea[k] >= 0.0f) {
       node.child[k] = uint32_t(nodes_.size());
       nodes_.emplace_back();
     } else {
@@ -274,9 +337,58 @@ double WideBvh::laneOccupancy() const {
   return packets_.empty() ? 0.0 : double(used) / double(4 * packets_.size());
 }
 
+// The walks, written once for both box tests. Each entry point below is
+// flattened (everything it calls inlined into it), so the AVX2 one is
+// compiled for AVX2 throughout and the baseline one never uses it.
+struct WideBvh::Walk {
+  template <class Boxes>
+  static std::optional<PrimitiveHit> closest(const WideBvh& bvh, const RayLanes& r, const Boxes& boxes,
+                                             const Ray& ray, Interval range);
+  template <class Boxes>
+  static bool any(const WideBvh& bvh, const RayLanes& r, const Boxes& boxes, const Ray& ray, Interval range);
+
+  [[gnu::flatten]] static std::optional<PrimitiveHit> closestBaseline(const WideBvh& bvh, const Ray& ray,
+                                                                      Interval range) {
+    const RayLanes r(ray);
+    return closest(bvh, r, BaselineBoxes{r}, ray, range);
+  }
+  [[gnu::flatten]] static bool anyBaseline(const WideBvh& bvh, const Ray& ray, Interval range) {
+    const RayLanes r(ray);
+    return any(bvh, r, BaselineBoxes{r}, ray, range);
+  }
+#if PATHLAB_WIDE_BVH_AVX2
+  [[gnu::target("avx2"), gnu::flatten]] static std::optional<PrimitiveHit> closestAvx2(const WideBvh& bvh,
+                                                                                      const Ray& ray,
+                                                                                      Interval range) {
+    const RayLanes r(ray);
+    return closest(bvh, r, Avx2Boxes(r), ray, range);
+  }
+  [[gnu::target("avx2"), gnu::flatten]] static bool anyAvx2(const WideBvh& bvh, const Ray& ray, Interval range) {
+    const RayLanes r(ray);
+    return any(bvh, r, Avx2Boxes(r), ray, range);
+  }
+#endif
+};
+
 std::optional<PrimitiveHit> WideBvh::intersectClosest(const Ray& ray, Interval range) const {
   if (nodes_.empty()) return std::nullopt;
-  const RayLanes r(ray);
+#if PATHLAB_WIDE_BVH_AVX2
+  if (avx2_) return Walk::closestAvx2(*this, ray, range);
+#endif
+  return Walk::closestBaseline(*this, ray, range);
+}
+
+bool WideBvh::intersectAny(const Ray& ray, Interval range) const {
+  if (nodes_.empty()) return false;
+#if PATHLAB_WIDE_BVH_AVX2
+  if (avx2_) return Walk::anyAvx2(*this, ray, range);
+#endif
+  return Walk::anyBaseline(*this, ray, range);
+}
+
+template <class Boxes>
+std::optional<PrimitiveHit> WideBvh::Walk::closest(const WideBvh& bvh, const RayLanes& r, const Boxes& boxes,
+                                                   const Ray& ray, Interval range) {
   struct Pending {
     uint32_t item;
     float tEntry;
@@ -287,21 +399,22 @@ std::optional<PrimitiveHit> WideBvh::intersectClosest(const Ray& ray, Interval r
   uint32_t item = 0;
   while (true) {
     if (item & kLeaf) {
-      leafHits(leaves_[item & ~kLeaf], packets_, spheres_, tests_, r, ray, range, [&](const PrimitiveHit& hit) {
+      const Leaf& leaf = bvh.leaves_[item & ~kLeaf];
+      leafHits(leaf, bvh.packets_, bvh.spheres_, bvh.tests_, r, ray, range, [&](const PrimitiveHit& hit) {
         closest = hit;
         range.max = hit.t;  // from now on only closer hits count
         return false;
       });
     } else {
-      alignas(16) float entry[4];
-      int mask = childEntries(nodes_[item], r, range.min, range.max, entry);
+      alignas(32) float entry[kWidth];
+      int mask = boxes(bvh.nodes_[item], range.min, range.max, entry);
       if (mask) {
         // The children hit, nearest first: visit the nearest, stack the rest.
-        Pending hit[4];
+        Pending hit[kWidth];
         int count = 0;
         for (; mask; mask &= mask - 1) {
           const int lane = std::countr_zero(unsigned(mask));
-          Pending p{nodes_[item].child[lane], entry[lane]};
+          Pending p{bvh.nodes_[item].child[lane], entry[lane]};
           int k = count++;
           for (; k > 0 && hit[k - 1].tEntry > p.tEntry; --k) hit[k] = hit[k - 1];
           hit[k] = p;
@@ -323,22 +436,21 @@ std::optional<PrimitiveHit> WideBvh::intersectClosest(const Ray& ray, Interval r
   }
 }
 
-bool WideBvh::intersectAny(const Ray& ray, Interval range) const {
-  if (nodes_.empty()) return false;
-  const RayLanes r(ray);
+template <class Boxes>
+bool WideBvh::Walk::any(const WideBvh& bvh, const RayLanes& r, const Boxes& boxes, const Ray& ray, Interval range) {
   std::array<uint32_t, kStackSize> stack;
   int size = 0;
   uint32_t item = 0;
   while (true) {
     if (item & kLeaf) {
-      if (leafHits(leaves_[item & ~kLeaf], packets_, spheres_, tests_, r, ray, range,
+      if (leafHits(bvh.leaves_[item & ~kLeaf], bvh.packets_, bvh.spheres_, bvh.tests_, r, ray, range,
                    [](const PrimitiveHit&) { return true; })) {
         return true;
       }
     } else {
-      alignas(16) float entry[4];
-      const Node& node = nodes_[item];
-      int mask = childEntries(node, r, range.min, range.max, entry);
+      alignas(32) float entry[kWidth];
+      const Node& node = bvh.nodes_[item];
+      int mask = boxes(node, range.min, range.max, entry);
       if (mask) {
         item = node.child[std::countr_zero(unsigned(mask))];
         for (mask &= mask - 1; mask; mask &= mask - 1) stack[size++] = node.child[std::countr_zero(unsigned(mask))];

@@ -39,8 +39,9 @@ std::string formatBvhStatistics(const BvhStatistics& statistics);
 
 // How rendering walks task 3's tree: Task3 calls the linked task-3 code
 // (intersectClosest, intersectAny); Fast collapses the same tree into the
-// framework's 4-wide layout (wide_bvh.h) and tests four boxes and four
-// triangles at a time, with the reference task 2's arithmetic: the same hits.
+// framework's 8-wide layout (wide_bvh.h) and tests eight boxes (AVX2; four
+// per instruction without it) and four triangles at a time, with the
+// reference task 2's arithmetic: the same hits.
 // Fast is the default where tasks 2 and 3 are both the reference's; a
 // student's render runs their own code.
 enum class Traversal { Task3, Fast };

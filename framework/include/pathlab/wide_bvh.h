@@ -1,7 +1,7 @@
 // The framework's render path (--accel fast): task 3's binary tree collapsed
-// into a 4-wide tree whose four child boxes are tested in one SIMD pass, with
-// the triangles of each leaf stored four to a packet and tested together, as
-// Embree and tinybvh lay out theirs. The packet test is the reference task 2's
+// into an 8-wide tree whose eight child boxes are tested together (AVX2 where
+// the CPU has it, else four at a time), with the triangles of each leaf
+// stored four to a packet and tested together, as Embree lays out its own. The packet test is the reference task 2's
 // watertight test (pbrt-v4) done lane by lane with the same arithmetic, so the
 // hits are task 3's; spheres, and the rare ray exactly on a triangle's edge,
 // go to the linked task 2 through its table. Use it where task 2 is the
@@ -28,24 +28,31 @@ class WideBvh {
   // `geometry` holds `bvh`'s primitives in leaf order (LeafGeometry(scene,
   // bvh.primitives, ...)); `tests` are task 2's (kLinkedTasks.primitives),
   // for spheres and edge cases.
-  WideBvh(const Bvh& bvh, const LeafGeometry& geometry, const PrimitiveTests& tests);
+  //
+  // The box tests use AVX2 (eight boxes per instruction) where the CPU has
+  // it, else the baseline: SSE2 (four at a time), or plain code off x86.
+  // Both give the same hits; Baseline forces the second (for tests).
+  enum class Instructions { Best, Baseline };
+  WideBvh(const Bvh& bvh, const LeafGeometry& geometry, const PrimitiveTests& tests,
+          Instructions instructions = Instructions::Best);
 
   // The same answers as task 3's intersectClosest / intersectAny over `bvh`.
   std::optional<PrimitiveHit> intersectClosest(const Ray& ray, Interval range) const;
   bool intersectAny(const Ray& ray, Interval range) const;
 
+  bool usesAvx2() const { return avx2_; }
   size_t nodeCount() const { return nodes_.size(); }
   size_t packetCount() const { return packets_.size(); }
   // Share of packet lanes that hold a triangle (empty lanes cost as much).
   double laneOccupancy() const;
 
-  // Four children: their boxes one lane each (structure of arrays, so one
-  // load gives an axis of all four), and what each child is.
-  struct alignas(16) Node {
-    float bounds[6][4];   // min x, min y, min z, max x, max y, max z; lane = child
-    uint32_t child[4];    // a node index, or kLeaf | index into leaves_
-    uint32_t count = 0;   // children in use, lanes [0, count)
-    uint32_t unused[3] = {};
+  // Up to kWidth children: their boxes one lane each (structure of arrays, so
+  // one load gives an axis of four children), and what each child is.
+  static constexpr int kWidth = 8;
+  struct alignas(32) Node {
+    float bounds[6][kWidth];   // min x, min y, min z, max x, max y, max z; lane = child
+    uint32_t child[kWidth];    // a node index, or kLeaf | index into leaves_
+    uint32_t count = 0;        // children in use, lanes [0, count)
   };
   // Up to four triangles, vertex by vertex and axis by axis.
   struct alignas(16) TrianglePacket {
@@ -67,6 +74,7 @@ class WideBvh {
   static constexpr int kPacketSize = 4;
 
  private:
+  struct Walk;  // the traversals (wide_bvh.cpp)
   void collapse(const Bvh& bvh, const LeafGeometry& geometry, const std::vector<uint32_t>& below, uint32_t wide,
                 uint32_t binary);
   uint32_t addLeaf(const Bvh& bvh, const LeafGeometry& geometry, uint32_t subtree);
@@ -76,6 +84,7 @@ class WideBvh {
   std::vector<SphereSlot> spheres_;
   std::vector<Leaf> leaves_;
   PrimitiveTests tests_;
+  bool avx2_ = false;
 };
 
 }  // namespace pathlab
