@@ -40,6 +40,33 @@ TriangleMesh bumpySphere(int rings, int segments, double radius, DVec3 center, D
   return mesh;
 }
 
+TriangleMesh coil(int turns, int segments, int sides, double wire) {
+  TriangleMesh mesh;
+  const int steps = turns * segments;
+  mesh.name = "coil (" + std::to_string(2 * steps * sides) + " triangles)";
+  for (int i = 0; i <= steps; ++i) {
+    const double s = double(i) / steps, angle = 2.0 * kPiD * turns * s;
+    const DVec3 centre(std::cos(angle), -1.0 + 2.0 * s, std::sin(angle));
+    const double around = 2.0 * kPiD * turns;  // d(angle)/ds
+    const DVec3 tangent = glm::normalize(DVec3(-std::sin(angle) * around, 2.0, std::cos(angle) * around));
+    const DVec3 outward(std::cos(angle), 0.0, std::sin(angle));  // perpendicular to the tangent
+    const DVec3 across = glm::cross(tangent, outward);
+    for (int j = 0; j < sides; ++j) {
+      const double phi = 2.0 * kPiD * j / sides;
+      mesh.positions.push_back(Point3(centre + wire * (std::cos(phi) * outward + std::sin(phi) * across)));
+    }
+  }
+  auto at = [sides](int i, int j) { return uint32_t(i * sides + j % sides); };
+  // Counter-clockwise seen from outside the wire.
+  for (int i = 0; i < steps; ++i) {
+    for (int j = 0; j < sides; ++j) {
+      mesh.triangles.emplace_back(at(i, j), at(i + 1, j + 1), at(i + 1, j));
+      mesh.triangles.emplace_back(at(i, j), at(i, j + 1), at(i + 1, j + 1));
+    }
+  }
+  return mesh;
+}
+
 Scene scanLikeScene() {
   Scene scene;
   scene.materials.push_back(Material{.name = "default"});

@@ -191,6 +191,23 @@ TriangleMesh bumpySphereMesh(const Object& o) {
   return bumpySphere(rings, segments);
 }
 
+// A coiled wire of radius about 1 around the y axis (pathlab/procedural.h):
+// many long, thin triangles, made in code.
+TriangleMesh coilMesh(const Object& o) {
+  Object c(o.source(), o.at("coil"), o.field("coil"), {"turns", "segments", "sides", "wire"});
+  const int turns = int(c.integer("turns", 40, 1, 4096));
+  const int segments = int(c.integer("segments", 32, 3, 4096));
+  const int sides = int(c.integer("sides", 8, 3, 256));
+  const float wire = c.positive("wire", 0.01f);
+  if (wire > 0.5f) c.fail(c.field("wire"), "expected a wire radius in (0, 0.5] (the coil's radius is 1), got " +
+                                               c.at("wire").dump());
+  if (int64_t(turns) * segments * sides > (int64_t(1) << 22)) {  // 8 M triangles, as for bumpy_sphere
+    c.fail(c.field("turns"), std::to_string(turns) + " turns of " + std::to_string(segments) + " segments of " +
+                                 std::to_string(sides) + " sides is more than 4,194,304 quads");
+  }
+  return coil(turns, segments, sides, wire);
+}
+
 bool hasArea(const TriangleMesh& mesh) {
   for (const glm::uvec3& t : mesh.triangles) {
     Vec3 e1 = mesh.positions[t.y] - mesh.positions[t.x], e2 = mesh.positions[t.z] - mesh.positions[t.x];
@@ -257,12 +274,13 @@ Scene parseScene(const Source& source, const Json& root) {
     const Json& meshes = top.array("meshes");
     for (size_t i = 0; i < meshes.size(); ++i) {
       Object o(source, meshes[i], indexed("meshes", i),
-               {"name", "obj", "positions", "triangles", "normals", "quad", "bumpy_sphere", "material", "transform"});
+               {"name", "obj", "positions", "triangles", "normals", "quad", "bumpy_sphere", "coil", "material",
+                "transform"});
       int shapes = int(o.has("obj")) + int(o.has("positions") || o.has("triangles")) + int(o.has("quad")) +
-                   int(o.has("bumpy_sphere"));
+                   int(o.has("bumpy_sphere")) + int(o.has("coil"));
       if (shapes != 1) {
-        o.fail(indexed("meshes", i),
-               "expected exactly one of \"obj\", \"positions\"+\"triangles\", \"quad\" or \"bumpy_sphere\"");
+        o.fail(indexed("meshes", i), "expected exactly one of \"obj\", \"positions\"+\"triangles\", \"quad\", "
+                                     "\"bumpy_sphere\" or \"coil\"");
       }
       TriangleMesh mesh;
       if (o.has("obj")) {
@@ -271,6 +289,8 @@ Scene parseScene(const Source& source, const Json& root) {
         mesh = quadMesh(o);
       } else if (o.has("bumpy_sphere")) {
         mesh = bumpySphereMesh(o);
+      } else if (o.has("coil")) {
+        mesh = coilMesh(o);
       } else {
         if (!o.has("positions") || !o.has("triangles")) {
           o.fail(indexed("meshes", i), "an inline mesh needs both \"positions\" and \"triangles\"");

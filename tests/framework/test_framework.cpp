@@ -41,6 +41,15 @@ std::string loadError(const std::string& json) {
 
 }  // namespace
 
+TEST_CASE("maths: maxComponent ignores NaN components, as std::fmax does") {
+  const float nan = std::nanf("");
+  CHECK(maxComponent(Vec3(-1.0f, -3.0f, -2.0f)) == -1.0f);
+  CHECK(maxComponent(Vec3(nan, 1.0f, 2.0f)) == 2.0f);
+  CHECK(maxComponent(Vec3(3.0f, nan, 2.0f)) == 3.0f);
+  CHECK(maxComponent(Vec3(0.5f, 1.0f, nan)) == 1.0f);
+  CHECK(std::isnan(maxComponent(Vec3(nan))));
+}
+
 TEST_CASE("scene: the embedded default scene is the Cornell box with two spheres") {
   Scene scene = defaultScene();
   CHECK(scene.meshes.size() == 6);
@@ -144,3 +153,31 @@ TEST_CASE("scene: OBJ meshes load with transforms, relative to the scene file") 
   CHECK(near(hi, Vec3(2, 2, -3), 1e-6f));
 }
 
+
+TEST_CASE("scene: a coil is a closed loop of long, thin triangles facing out of the wire") {
+  const Scene scene = loadSceneFromJson(
+      R"({"meshes": [{"coil": {"turns": 3, "segments": 16, "sides": 6, "wire": 0.05}}]})", "c.json", ".");
+  REQUIRE(scene.meshes.size() == 1);
+  const TriangleMesh& mesh = scene.meshes[0];
+  CHECK(mesh.triangles.size() == 2 * 3 * 16 * 6);
+  int outward = 0;
+  float leastAspect = kInfinity;  // longest edge / height
+  for (const glm::uvec3& t : mesh.triangles) {
+    const Point3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
+    const Vec3 n = glm::cross(b - a, c - a);
+    const Point3 centroid = (a + b + c) / 3.0f;
+    // The helix point at the centroid's height: the wire's axis there.
+    const float s = (centroid.y + 1.0f) / 2.0f, angle = 2.0f * kPi * 3.0f * s;
+    const Point3 axis(std::cos(angle), centroid.y, std::sin(angle));
+    outward += glm::dot(n, centroid - axis) > 0.0f;
+    const float longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+    leastAspect = std::min(leastAspect, longest * longest / glm::length(n));
+  }
+  CHECK(outward == int(mesh.triangles.size()));
+  CHECK(leastAspect > 6.0f);  // about 2 pi / 16 long, 2 pi 0.05 / 6 wide: 7.6
+  CHECK(loadError(R"({"meshes": [{"coil": {"wire": 2}}]})").find("meshes[0].coil.wire") != std::string::npos);
+  CHECK(loadError(R"({"meshes": [{"coil": {"turns": 0}}]})").find("meshes[0].coil.turns") != std::string::npos);
+  CHECK(loadError(R"({"meshes": [{"coil": {"turns": 4096, "segments": 4096, "sides": 256}}]})")
+            .find("more than 4,194,304 quads") != std::string::npos);
+  CHECK(loadError(R"({"meshes": [{"coil": {}, "quad": {}}]})").find("exactly one of") != std::string::npos);
+}

@@ -35,7 +35,12 @@ inline bool isFinite(const Vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-inline float maxComponent(const Vec3& v) { return std::fmax(v.x, std::fmax(v.y, v.z)); }
+// The largest component, NaN components ignored (as std::fmax, which GCC
+// calls out of line on x86-64: this runs several times per path vertex).
+inline float maxComponent(const Vec3& v) {
+  auto fmax = [](float a, float b) { return (a > b || b != b) ? a : b; };
+  return fmax(v.x, fmax(v.y, v.z));
+}
 
 // Rec. 709 luminance of linear RGB.
 inline float luminance(const Color& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
