@@ -86,6 +86,20 @@ double timeParallel(size_t n, int threads, const std::function<void(size_t)>& bo
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Median seconds of kRepeats runs of `build`; `freeLast` runs first, off the
+// clock, so freeing the previous run's structures is not timed (as Embree's
+// timing leaves its own out).
+double medianBuildSeconds(const std::function<void()>& freeLast, const std::function<void()>& build) {
+  std::vector<double> seconds;
+  for (int r = 0; r < kRepeats; ++r) {
+    freeLast();
+    const auto start = std::chrono::steady_clock::now();
+    build();
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  return median(seconds);
+}
+
 double mraysPerSecond(size_t n, int threads, const std::function<void(size_t)>& body) {
   std::vector<double> seconds;
   for (int r = 0; r < kRepeats; ++r) seconds.push_back(timeParallel(n, threads, body));
@@ -192,15 +206,8 @@ int runBvhBench(const BvhBenchOptions& options) {
 
   // Builds: median of three, one thread each.
   const std::vector<Aabb> bounds = primitiveBounds(scene);
-  std::vector<double> buildTimes;
   Bvh bvh;
-  for (int r = 0; r < kRepeats; ++r) {
-    bvh = Bvh{};  // the last run's tree is freed before the clock starts, as Embree's is
-    const auto start = std::chrono::steady_clock::now();
-    bvh = buildBvh(bounds);
-    buildTimes.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  const double buildTask = median(buildTimes);
+  const double buildTask = medianBuildSeconds([&] { bvh = Bvh{}; }, [&] { bvh = buildBvh(bounds); });
   const std::string problem = validateBvh(bvh, scene.primitives.size(), &bounds);
   if (!problem.empty()) throw Error("the task-3 BVH (" + describeTasks(tasks, {3}) + ") is not valid: " + problem);
   // The fast path's layout: the leaves' geometry gathered in leaf order, then
@@ -208,21 +215,20 @@ int runBvhBench(const BvhBenchOptions& options) {
   // the same gathered geometry; its build time above leaves it out.)
   LeafGeometry geometry;
   WideBvh wide;
-  buildTimes.clear();
-  for (int r = 0; r < kRepeats; ++r) {
-    wide = WideBvh();
-    geometry = LeafGeometry();
-    const auto start = std::chrono::steady_clock::now();
-    geometry = LeafGeometry(scene, bvh.primitives, kLinkedTasks.primitives);
-    wide = WideBvh(bvh, geometry, kLinkedTasks.primitives);
-    buildTimes.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  const double buildWide = median(buildTimes);
+  const double buildWide = medianBuildSeconds(
+      [&] {
+        wide = WideBvh();
+        geometry = LeafGeometry();
+      },
+      [&] {
+        geometry = LeafGeometry(scene, bvh.primitives, kLinkedTasks.primitives);
+        wide = WideBvh(bvh, geometry, kLinkedTasks.primitives);
+      });
 
   std::optional<double> buildEmbree;
 #ifdef PATHLAB_HAVE_EMBREE
   std::unique_ptr<EmbreeScene> embree;
-  buildTimes.clear();
+  std::vector<double> buildTimes;
   for (int r = 0; r < kRepeats; ++r) {
     embree = std::make_unique<EmbreeScene>(scene.meshes[0], 1);
     buildTimes.push_back(embree->buildSeconds());

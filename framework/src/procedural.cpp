@@ -44,10 +44,10 @@ TriangleMesh coil(int turns, int segments, int sides, double wire) {
   TriangleMesh mesh;
   const int steps = turns * segments;
   mesh.name = "coil (" + std::to_string(2 * steps * sides) + " triangles)";
+  const double around = 2.0 * kPiD * turns;  // the helix's angle at s in [0, 1] is around * s
   for (int i = 0; i <= steps; ++i) {
-    const double s = double(i) / steps, angle = 2.0 * kPiD * turns * s;
+    const double s = double(i) / steps, angle = around * s;
     const DVec3 centre(std::cos(angle), -1.0 + 2.0 * s, std::sin(angle));
-    const double around = 2.0 * kPiD * turns;  // d(angle)/ds
     const DVec3 tangent = glm::normalize(DVec3(-std::sin(angle) * around, 2.0, std::cos(angle) * around));
     const DVec3 outward(std::cos(angle), 0.0, std::sin(angle));  // perpendicular to the tangent
     const DVec3 across = glm::cross(tangent, outward);

@@ -6,6 +6,7 @@
 #include <bit>
 
 #include "lanes.h"
+#include "pathlab/leaf_geometry.h"
 
 // The AVX2 box tests are compiled in on x86-64 (GCC and Clang) and chosen at
 // run time, so one binary runs on any x86-64 CPU.
@@ -18,7 +19,6 @@
 #if PATHLAB_WIDE_BVH_AVX2
 #include <immintrin.h>
 #endif
-#include "pathlab/leaf_geometry.h"
 
 namespace pathlab {
 namespace {
@@ -334,7 +334,7 @@ uint32_t WideBvh::addLeaf(const Bvh& bvh, const LeafGeometry& geometry, uint32_t
 double WideBvh::laneOccupancy() const {
   size_t used = 0;
   for (const TrianglePacket& p : packets_) used += size_t(std::popcount(p.lanes));
-  return packets_.empty() ? 0.0 : double(used) / double(4 * packets_.size());
+  return packets_.empty() ? 0.0 : double(used) / double(kPacketSize * packets_.size());
 }
 
 // The walks, written once for both box tests. Each entry point below is

@@ -1,9 +1,9 @@
 // The framework's render path (--accel fast): task 3's binary tree collapsed
 // into an 8-wide tree whose eight child boxes are tested together (AVX2 where
 // the CPU has it, else four at a time), with the triangles of each leaf
-// stored four to a packet and tested together, as Embree lays out its own. The packet test is the reference task 2's
-// watertight test (pbrt-v4) done lane by lane with the same arithmetic, so the
-// hits are task 3's; spheres, and the rare ray exactly on a triangle's edge,
+// stored four to a packet and tested together, as Embree lays out its own.
+// The packet test is the reference task 2's watertight test (pbrt-v4) done
+// lane by lane with the same arithmetic, so the hits are task 3's; spheres, and the rare ray exactly on a triangle's edge,
 // go to the linked task 2 through its table. Use it where task 2 is the
 // reference (defaultTraversal in accelerator.h decides); the tree must have
 // passed validateBvh.
@@ -47,7 +47,7 @@ class WideBvh {
   double laneOccupancy() const;
 
   // Up to kWidth children: their boxes one lane each (structure of arrays, so
-  // one load gives an axis of four children), and what each child is.
+  // one load gives an axis of four or eight children), and what each child is.
   static constexpr int kWidth = 8;
   struct alignas(32) Node {
     float bounds[6][kWidth];   // min x, min y, min z, max x, max y, max z; lane = child
