@@ -1,10 +1,11 @@
 # Every task file is compiled twice into OBJECT libraries with the same symbols:
 #   pathlab_taskN_student    from tasks/NN-name/FILE.cpp   (the student's TODOs)
 #   pathlab_taskN_reference  from solutions/NN-name/FILE.cpp
-# An executable links one of the two per task. A task file depends on the core
-# only (pathlab_core); the render layer (pathlab_framework, a static library
-# that calls the task functions) resolves against whichever implementation
-# the executable chose: OBJECT libraries always link, in any order.
+# An executable links one of the two per task. A task file uses the task
+# APIs and the layers below them only (pathlab_tasks: framework/tasks, core,
+# util); the render and debug layers (static libraries that call the task
+# functions) resolve against whichever implementation the executable chose:
+# OBJECT libraries always link, in any order.
 
 #
 # The task list is the folders tasks/NN-name/, numbered from 01: the suites,
@@ -60,7 +61,7 @@ function(pathlab_add_tasks)
       endif()
       if(EXISTS ${src})
         add_library(pathlab_task${n}_${variant} OBJECT ${src})
-        target_link_libraries(pathlab_task${n}_${variant} PUBLIC pathlab_core)
+        target_link_libraries(pathlab_task${n}_${variant} PUBLIC pathlab_tasks)
       endif()
     endforeach()
   endforeach()

@@ -1,7 +1,7 @@
 """The task list, as every tool reads it: the folders tasks/NN-name/ (CMake
 reads the same folders, cmake/PathLabTasks.cmake). Task NN's student file is
 tasks/NN-name/name.cpp with the name's dashes as underscores; its API header
-framework/include/pathlab/tasks/name.h; its reference solutions/NN-name/name.cpp;
+framework/tasks/name.h; its reference solutions/NN-name/name.cpp;
 its suite tests/NN-name/."""
 import re
 from pathlib import Path

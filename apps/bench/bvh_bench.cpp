@@ -12,15 +12,15 @@
 #include <thread>
 #include <vector>
 
-#include "pathlab/accelerator.h"
-#include "pathlab/task_wiring.h"
-#include "pathlab/error.h"
-#include "pathlab/parallel.h"
-#include "pathlab/procedural.h"
-#include "pathlab/random.h"
-#include "pathlab/scene_io.h"
-#include "pathlab/tasks/bvh.h"
-#include "pathlab/wide_bvh.h"
+#include "render/accelerator.h"
+#include "render/task_wiring.h"
+#include "render/wide_bvh.h"
+#include "scene/procedural.h"
+#include "scene/scene_io.h"
+#include "tasks/bvh.h"
+#include "util/error.h"
+#include "util/parallel.h"
+#include "util/random.h"
 #ifdef PATHLAB_HAVE_EMBREE
 #include "embree_scene.h"
 #endif

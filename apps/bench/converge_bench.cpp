@@ -14,12 +14,12 @@
 #include <vector>
 
 #include "linked_tasks.h"
-#include "pathlab/input_file.h"
-#include "pathlab/error.h"
-#include "pathlab/parallel.h"
-#include "pathlab/render.h"
-#include "pathlab/scene_io.h"
-#include "pathlab/todo.h"
+#include "util/input_file.h"
+#include "util/error.h"
+#include "util/parallel.h"
+#include "render/render.h"
+#include "scene/scene_io.h"
+#include "util/todo.h"
 
 namespace pathlab::bench {
 namespace {
@@ -34,7 +34,7 @@ struct Strategy {
   // the default strategy.
   std::vector<int> tasks;
   std::string change;  // what differs from the default, and whose code does it
-  bool framework = false;  // run by the framework's path tracer (pathlab/strategies.h), not tracePath
+  bool framework = false;  // run by the framework's path tracer (render/strategies.h), not tracePath
 };
 
 // Each strategy changes one thing from the default (the course's recipe).

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <string>
 
-#include "pathlab/error.h"
+#include "util/error.h"
 
 namespace pathlab::bench {
 

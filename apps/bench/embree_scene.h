@@ -5,9 +5,9 @@
 #include <memory>
 #include <optional>
 
-#include "pathlab/hit.h"
-#include "pathlab/ray.h"
-#include "pathlab/scene.h"
+#include "core/hit.h"
+#include "core/scene.h"
+#include "util/ray.h"
 
 namespace pathlab::bench {
 

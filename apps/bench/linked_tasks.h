@@ -5,7 +5,7 @@
 // the choice as PATHLAB_TASK_SUMMARY ("1:reference 2:student ..."), the
 // string `pathlab --version` prints. A binary compiled without it still knows
 // one case for sure: a task with no solutions/ file when the build was
-// configured (a student release; pathlab/task_list.h) can only be the
+// configured (a student release; core/task_list.h) can only be the
 // student's; anything else is reported as "unknown", never guessed.
 #pragma once
 
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "pathlab/task_list.h"
+#include "core/task_list.h"
 
 namespace pathlab::bench {
 

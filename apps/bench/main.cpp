@@ -10,7 +10,7 @@
 #include "bvh_bench.h"
 #include "converge_bench.h"
 #include "render_bench.h"
-#include "pathlab/error.h"
+#include "util/error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"PathLab benchmarks"};

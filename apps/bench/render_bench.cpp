@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "linked_tasks.h"
-#include "pathlab/error.h"
-#include "pathlab/parallel.h"
-#include "pathlab/render.h"
-#include "pathlab/scene_io.h"
-#include "pathlab/task_wiring.h"
+#include "util/error.h"
+#include "util/parallel.h"
+#include "render/render.h"
+#include "scene/scene_io.h"
+#include "render/task_wiring.h"
 
 namespace pathlab::bench {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "demos.h"
-#include "pathlab/random.h"
+#include "util/random.h"
 
 namespace pathlab::demo {
 

@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "demo_support.h"
-#include "pathlab/draw.h"
-#include "pathlab/tasks/environment.h"
+#include "debug/draw.h"
+#include "tasks/environment.h"
 
 #ifndef PATHLAB_SOURCE_DIR
 #define PATHLAB_SOURCE_DIR "."

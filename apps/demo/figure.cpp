@@ -5,7 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "pathlab/error.h"
+#include "util/error.h"
 
 #ifndef PATHLAB_SOURCE_DIR
 #define PATHLAB_SOURCE_DIR "."

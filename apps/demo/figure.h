@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "pathlab/image.h"
+#include "util/image.h"
 
 namespace pathlab::demo {
 

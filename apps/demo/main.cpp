@@ -8,8 +8,8 @@
 #include <filesystem>
 
 #include "demos.h"
-#include "pathlab/input_file.h"
-#include "pathlab/error.h"
+#include "util/input_file.h"
+#include "util/error.h"
 #ifdef PATHLAB_HAVE_GUI
 #include "demo_window.h"
 #endif

@@ -1,5 +1,5 @@
 // pathlab-envmap: writes the project's environment maps (linear float EXR,
-// equirectangular, +y up; conventions in framework/include/pathlab/tasks/environment.h).
+// equirectangular, +y up; conventions in framework/tasks/environment.h).
 //   pathlab-envmap OUT_DIR
 //     sky-sun.exr    Preetham et al.'s daylight sky (turbidity 3) with a small, very bright sun
 //     studio.exr     a dark studio with two large soft boxes: low contrast, smooth
@@ -12,10 +12,10 @@
 #include <filesystem>
 #include <string>
 
-#include "pathlab/input_file.h"
-#include "pathlab/error.h"
-#include "pathlab/image.h"
-#include "pathlab/tasks/environment.h"
+#include "tasks/environment.h"
+#include "util/error.h"
+#include "util/image.h"
+#include "util/input_file.h"
 
 using namespace pathlab;
 

@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <sstream>
 
-#include "pathlab/camera.h"
-#include "pathlab/error.h"
-#include "pathlab/progress.h"
-#include "pathlab/task_list.h"
-#include "pathlab/task_wiring.h"
-#include "pathlab/todo.h"
+#include "core/camera.h"
+#include "core/task_list.h"
+#include "render/task_wiring.h"
+#include "util/error.h"
+#include "util/progress.h"
+#include "util/todo.h"
 
 namespace pathlab::gui {
 namespace {
@@ -23,7 +23,7 @@ constexpr const char* kTaskTitles[] = {"", "Camera rays", "Intersection", "BVH",
 constexpr const char* kTabNames[] = {"", "1 Camera", "2 Hits", "3 BVH", "4 Direct", "5 Paths", "6 Mirror/glass",
                                      "7 Environment"};
 static_assert(std::size(kTaskTitles) == kTaskCount + 1 && std::size(kTabNames) == kTaskCount + 1,
-              "a title and a tab name for every task folder (pathlab/task_list.h)");
+              "a title and a tab name for every task folder (core/task_list.h)");
 constexpr int kInspectedSamples = 16;
 const ImVec4 kWarning(1.0f, 0.45f, 0.35f, 1.0f), kGood(0.5f, 0.9f, 0.5f, 1.0f), kDim(0.65f, 0.65f, 0.65f, 1.0f);
 

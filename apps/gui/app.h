@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "background_worker.h"
-#include "pathlab/debug_views.h"
-#include "pathlab/inspect.h"
-#include "pathlab/render.h"
+#include "debug/debug_views.h"
+#include "debug/inspect.h"
+#include "render/render.h"
 #include "script.h"
 #include "shell.h"
 #include "texture.h"

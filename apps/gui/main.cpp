@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "app.h"
-#include "pathlab/error.h"
-#include "pathlab/scene_io.h"
+#include "util/error.h"
+#include "scene/scene_io.h"
 
 #ifndef PATHLAB_TASK_SUMMARY
 #define PATHLAB_TASK_SUMMARY "unknown"

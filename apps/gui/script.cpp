@@ -3,7 +3,7 @@
 #include <map>
 #include <sstream>
 
-#include "pathlab/error.h"
+#include "util/error.h"
 
 namespace pathlab::gui {
 

@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "pathlab/error.h"
-#include "pathlab/image.h"
+#include "util/error.h"
+#include "util/image.h"
 
 namespace pathlab::gui {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <imgui.h>
 
-#include "pathlab/image.h"
+#include "util/image.h"
 
 namespace pathlab::gui {
 

@@ -13,11 +13,11 @@
 #include <regex>
 #include <string>
 
-#include "pathlab/debug_views.h"
-#include "pathlab/error.h"
-#include "pathlab/progress.h"
-#include "pathlab/render.h"
-#include "pathlab/scene_io.h"
+#include "debug/debug_views.h"
+#include "render/render.h"
+#include "scene/scene_io.h"
+#include "util/error.h"
+#include "util/progress.h"
 
 #ifndef PATHLAB_TASK_SUMMARY
 #define PATHLAB_TASK_SUMMARY "unknown"

@@ -7,7 +7,7 @@
 #include <unistd.h>
 
 #include "cli.h"
-#include "pathlab/error.h"
+#include "util/error.h"
 
 namespace {
 

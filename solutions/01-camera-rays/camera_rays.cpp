@@ -1,5 +1,5 @@
 // Task 1 — camera rays (reference solution).
-#include "pathlab/tasks/camera_rays.h"
+#include "tasks/camera_rays.h"
 
 #include <cmath>
 

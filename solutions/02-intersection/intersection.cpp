@@ -1,5 +1,5 @@
 // Task 2 — ray–triangle and ray–sphere intersection (reference solution).
-#include "pathlab/tasks/intersection.h"
+#include "tasks/intersection.h"
 
 #include <cmath>
 #include <utility>

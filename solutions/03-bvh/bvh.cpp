@@ -1,7 +1,7 @@
 // Task 3 — bounding volume hierarchy (reference solution): binned SAH build,
 // ordered stack traversal with a NaN-safe slab test. (The framework's render
-// path walks the same tree 8-wide: framework/src/wide_bvh.cpp.)
-#include "pathlab/tasks/bvh.h"
+// path walks the same tree 8-wide: framework/render/wide_bvh.cpp.)
+#include "tasks/bvh.h"
 
 #include <algorithm>
 #include <array>

@@ -1,5 +1,5 @@
 // Task 4 — direct lighting with shadows (reference solution).
-#include "pathlab/tasks/direct_lighting.h"
+#include "tasks/direct_lighting.h"
 
 #include <bit>
 #include <cmath>

@@ -1,11 +1,11 @@
 // Task 5 — path tracing (reference solution).
-#include "pathlab/tasks/path_tracing.h"
+#include "tasks/path_tracing.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "pathlab/bsdf.h"
-#include "pathlab/tasks/direct_lighting.h"
+#include "core/bsdf.h"
+#include "tasks/direct_lighting.h"
 
 namespace pathlab {
 

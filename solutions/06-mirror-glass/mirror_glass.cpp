@@ -1,5 +1,5 @@
 // Task 6 — mirror and glass (reference solution).
-#include "pathlab/tasks/mirror_glass.h"
+#include "tasks/mirror_glass.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Task 7 — environment lighting with importance sampling (reference solution).
-#include "pathlab/tasks/environment.h"
+#include "tasks/environment.h"
 
 #include <algorithm>
 #include <cmath>

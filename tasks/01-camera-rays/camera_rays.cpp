@@ -3,7 +3,7 @@
 // Goal: turn a pixel and two random numbers into the ray a pinhole camera
 // sees through that point of the image. Handout: tasks/01-camera-rays/README.md
 //
-// Functions to write (declared in framework/include/pathlab/tasks/camera_rays.h):
+// Functions to write (declared in framework/tasks/camera_rays.h):
 //   T1.1 pixelSamplePosition   a jittered point inside a pixel
 //   T1.2 cameraBasis           the camera's orthonormal frame
 //   T1.3 generateCameraRay     the ray through a raster position
@@ -12,11 +12,11 @@
 //   ./build/pathlab debug --task 1 --view directions -o directions.png
 //   ./build/pathlab debug --task 1 --view samples -o samples.png
 //   ctest --test-dir build -R 01-camera-rays --output-on-failure
-#include "pathlab/tasks/camera_rays.h"
+#include "tasks/camera_rays.h"
 
 #include <cmath>
 
-#include "pathlab/todo.h"
+#include "util/todo.h"
 
 namespace pathlab {
 

@@ -5,11 +5,11 @@
 //               sample positions the renderer uses (red: outside the pixel)
 #include <algorithm>
 
-#include "pathlab/debug_views.h"
-#include "pathlab/draw.h"
-#include "pathlab/parallel.h"
-#include "pathlab/random.h"
-#include "pathlab/tasks/camera_rays.h"
+#include "debug/debug_views.h"
+#include "debug/draw.h"
+#include "tasks/camera_rays.h"
+#include "util/parallel.h"
+#include "util/random.h"
 
 namespace pathlab {
 namespace {

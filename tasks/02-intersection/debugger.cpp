@@ -10,11 +10,11 @@
 #include <optional>
 #include <vector>
 
-#include "pathlab/debug_views.h"
-#include "pathlab/draw.h"
-#include "pathlab/parallel.h"
-#include "pathlab/accelerator.h"
-#include "pathlab/tasks/camera_rays.h"
+#include "debug/debug_views.h"
+#include "debug/draw.h"
+#include "render/accelerator.h"
+#include "tasks/camera_rays.h"
+#include "util/parallel.h"
 
 namespace pathlab {
 namespace {

@@ -5,7 +5,7 @@
 // surface point (position and normals) the shading code needs.
 // Handout: tasks/02-intersection/README.md
 //
-// Functions to write (declared in framework/include/pathlab/tasks/intersection.h):
+// Functions to write (declared in framework/tasks/intersection.h):
 //   T2.1 intersectTriangle      watertight ray–triangle test
 //   T2.2 intersectSphere        numerically careful ray–sphere test
 //   T2.3 triangleSurfacePoint   hit point and normals on a triangle
@@ -14,12 +14,12 @@
 // Check your work:
 //   ./build/pathlab debug --task 2 --view normals -o normals.png   (also: depth, primitive-id)
 //   ctest --test-dir build -R 02-intersection --output-on-failure
-#include "pathlab/tasks/intersection.h"
+#include "tasks/intersection.h"
 
 #include <cmath>
 #include <utility>
 
-#include "pathlab/todo.h"
+#include "util/todo.h"
 
 namespace pathlab {
 

@@ -4,7 +4,7 @@
 // of all of them: the difference between minutes and hours.
 // Handout: tasks/03-bvh/README.md
 //
-// Functions to write (declared in framework/include/pathlab/tasks/bvh.h):
+// Functions to write (declared in framework/tasks/bvh.h):
 //   T3.1 intersectBox      ray–box slab test
 //   T3.2 buildBvh          binned surface-area-heuristic (SAH) build
 //   T3.3 intersectClosest  closest hit, nearer child first
@@ -13,13 +13,13 @@
 // Check your work:
 //   ./build/pathlab debug --task 3 --view heatmap -o heatmap.png   (also: boxes)
 //   ctest --test-dir build -R 03-bvh --output-on-failure
-#include "pathlab/tasks/bvh.h"
+#include "tasks/bvh.h"
 
 #include <algorithm>
 #include <array>
 #include <numeric>
 
-#include "pathlab/todo.h"
+#include "util/todo.h"
 
 namespace pathlab {
 

@@ -10,12 +10,12 @@
 #include <cstdio>
 #include <vector>
 
-#include "pathlab/accelerator.h"
-#include "pathlab/task_wiring.h"
-#include "pathlab/debug_views.h"
-#include "pathlab/draw.h"
-#include "pathlab/parallel.h"
-#include "pathlab/tasks/camera_rays.h"
+#include "debug/debug_views.h"
+#include "debug/draw.h"
+#include "render/accelerator.h"
+#include "render/task_wiring.h"
+#include "tasks/camera_rays.h"
+#include "util/parallel.h"
 
 namespace pathlab {
 namespace {

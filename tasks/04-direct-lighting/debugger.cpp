@@ -7,11 +7,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "pathlab/debug_views.h"
-#include "pathlab/draw.h"
-#include "pathlab/inspect.h"
-#include "pathlab/render.h"
-#include "pathlab/task_wiring.h"
+#include "debug/debug_views.h"
+#include "debug/draw.h"
+#include "debug/inspect.h"
+#include "render/render.h"
+#include "render/task_wiring.h"
 
 namespace pathlab {
 namespace {

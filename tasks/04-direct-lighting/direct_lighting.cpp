@@ -4,7 +4,7 @@
 // is reflected towards the camera — soft shadows from area lights, hard ones
 // from point lights. Handout: tasks/04-direct-lighting/README.md
 //
-// Functions to write (declared in framework/include/pathlab/tasks/direct_lighting.h):
+// Functions to write (declared in framework/tasks/direct_lighting.h):
 //   T4.1 lambertianBrdf          the diffuse BRDF
 //   T4.2 offsetRayOrigin         where a ray leaving a surface starts
 //   T4.3 lightDirection          area -> solid angle: the two cosines
@@ -14,13 +14,13 @@
 //   ./build/pathlab --integrator direct -o direct.png
 //   ./build/pathlab debug --task 4 --view shadow-rays --pixel 200 250 -o rays.png
 //   ctest --test-dir build -R 04-direct-lighting --output-on-failure
-#include "pathlab/tasks/direct_lighting.h"
+#include "tasks/direct_lighting.h"
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
 
-#include "pathlab/todo.h"
+#include "util/todo.h"
 
 namespace pathlab {
 

@@ -3,7 +3,7 @@
 // Goal: light that bounces — colour bleeding, soft indirect light, the
 // ceiling lit by the floor. Handout: tasks/05-path-tracing/README.md
 //
-// Functions to write (declared in framework/include/pathlab/tasks/path_tracing.h):
+// Functions to write (declared in framework/tasks/path_tracing.h):
 //   T5.1 sampleDiffuseDirection, diffuseDirectionPdf   cosine-weighted hemisphere sampling
 //   T5.2 tracePath                                     the path tracer
 //
@@ -11,14 +11,14 @@
 //   ./build/pathlab -o path.png                     (the default integrator is path)
 //   ./build/pathlab debug --task 5 --view bounces -o bounces.png
 //   ctest --test-dir build -R 05-path-tracing --output-on-failure
-#include "pathlab/tasks/path_tracing.h"
+#include "tasks/path_tracing.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "pathlab/bsdf.h"
-#include "pathlab/tasks/direct_lighting.h"
-#include "pathlab/todo.h"
+#include "core/bsdf.h"
+#include "tasks/direct_lighting.h"
+#include "util/todo.h"
 
 namespace pathlab {
 

@@ -11,13 +11,13 @@
 #include <cstdio>
 #include <map>
 
-#include "pathlab/accelerator.h"
-#include "pathlab/bsdf.h"
-#include "pathlab/debug_views.h"
-#include "pathlab/draw.h"
-#include "pathlab/random.h"
-#include "pathlab/task_wiring.h"
-#include "pathlab/tasks/camera_rays.h"
+#include "core/bsdf.h"
+#include "debug/debug_views.h"
+#include "debug/draw.h"
+#include "render/accelerator.h"
+#include "render/task_wiring.h"
+#include "tasks/camera_rays.h"
+#include "util/random.h"
 
 namespace pathlab {
 namespace {

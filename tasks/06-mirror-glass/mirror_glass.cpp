@@ -3,7 +3,7 @@
 // Goal: surfaces that reflect and refract like a mirror and like glass:
 // reflections, refraction, caustics. Handout: tasks/06-mirror-glass/README.md
 //
-// Functions to write (declared in framework/include/pathlab/tasks/mirror_glass.h):
+// Functions to write (declared in framework/tasks/mirror_glass.h):
 //   T6.1 reflect         the mirror direction
 //   T6.2 refract         Snell's law, and total internal reflection
 //   T6.3 schlickFresnel  how much light reflects off glass
@@ -17,11 +17,11 @@
 //   ./build/pathlab media/scenes/cornell-mirror-glass.json -s 256 -o glass.png
 //   ./build/pathlab debug --task 6 --view lobe --pixel 130 200 media/scenes/cornell-mirror-glass.json -o lobe.png
 //   ctest --test-dir build -R 06-mirror-glass --output-on-failure
-#include "pathlab/tasks/mirror_glass.h"
+#include "tasks/mirror_glass.h"
 
 #include <cmath>
 
-#include "pathlab/todo.h"
+#include "util/todo.h"
 
 namespace pathlab {
 

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "pathlab/debug_views.h"
-#include "pathlab/draw.h"
-#include "pathlab/random.h"
-#include "pathlab/tasks/environment.h"
+#include "debug/debug_views.h"
+#include "debug/draw.h"
+#include "tasks/environment.h"
+#include "util/random.h"
 
 namespace pathlab {
 namespace {

@@ -4,7 +4,7 @@
 // sampling it where it is bright, so a small sun does not drown the image in
 // noise. Handout: tasks/07-environment/README.md
 //
-// Functions to write (declared in framework/include/pathlab/tasks/environment.h,
+// Functions to write (declared in framework/tasks/environment.h,
 // which also states the map's conventions):
 //   T7.1 directionToEquirect, equirectToDirection   the map's coordinates
 //   T7.2 lookupEnvironment                           bilinear lookup, wrapping at the seam
@@ -16,12 +16,12 @@
 //   ./build/pathlab media/scenes/sky-spheres.json -o sky.png
 //   ./build/pathlab debug --task 7 --view samples media/scenes/sky-spheres.json -o samples.png
 //   ctest --test-dir build -R 07-environment --output-on-failure
-#include "pathlab/tasks/environment.h"
+#include "tasks/environment.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "pathlab/todo.h"
+#include "util/todo.h"
 
 namespace pathlab {
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "../remote/call.h"
-#include "pathlab/tasks/camera_rays.h"
+#include "tasks/camera_rays.h"
 
 namespace pathlab::calls {
 PATHLAB_REMOTE_CALL(PixelSamplePosition, 1, Point2(IVec2, Vec2));

@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "../remote/call.h"
-#include "pathlab/scene.h"
-#include "pathlab/tasks/intersection.h"
+#include "core/scene.h"
+#include "tasks/intersection.h"
 
 namespace pathlab::calls {
 PATHLAB_REMOTE_CALL(IntersectTriangle, 1, std::optional<TriangleHit>(Ray, Interval, Point3, Point3, Point3));

@@ -18,7 +18,7 @@
 #include "grading.h"
 #include "meshes.h"
 #include "scenes.h"
-#include "pathlab/scene_io.h"
+#include "scene/scene_io.h"
 #include "calls.h"
 
 using namespace pathlab;

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "../remote/call.h"
-#include "pathlab/scene.h"
-#include "pathlab/tasks/bvh.h"
+#include "core/scene.h"
+#include "tasks/bvh.h"
 
 namespace pathlab::calls {
 using RayInRange = std::tuple<Ray, Interval>;

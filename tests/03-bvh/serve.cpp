@@ -2,7 +2,7 @@
 #include "../remote/server.h"
 #include "../remote/serve_images.h"
 #include "calls.h"
-#include "pathlab/task_wiring.h"
+#include "render/task_wiring.h"
 
 namespace pathlab::remote {
 

@@ -1,5 +1,5 @@
 // Autograder suite for task 3 — BVH. Closest hits are compared with brute
-// force over every primitive (framework/src/scene_intersect.cpp), so any
+// force over every primitive (framework/render/scene_intersect.cpp), so any
 // correct tree and traversal passes; build quality is compared with the
 // reference's SAH cost. All inputs are seeded: no false failures.
 // candidate::f(...) is the student's f, computed in the candidate process
@@ -14,8 +14,8 @@
 #include "image_test.h"
 #include "grading.h"
 #include "meshes.h"
-#include "pathlab/accelerator.h"
-#include "pathlab/scene_intersect.h"
+#include "render/accelerator.h"
+#include "render/scene_intersect.h"
 #include "calls.h"
 #include "scenes.h"
 

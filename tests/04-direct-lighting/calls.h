@@ -5,7 +5,7 @@
 
 #include "../remote/call.h"
 #include "../remote/trace_calls.h"
-#include "pathlab/tasks/direct_lighting.h"
+#include "tasks/direct_lighting.h"
 
 namespace pathlab::calls {
 PATHLAB_REMOTE_CALL(LambertianBrdf, 1, Color(Color));

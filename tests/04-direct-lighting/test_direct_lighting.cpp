@@ -13,9 +13,9 @@
 #include "image_scenes.h"
 #include "image_test.h"
 #include "grading.h"
-#include "pathlab/bsdf.h"
+#include "core/bsdf.h"
 #include "calls.h"
-#include "pathlab/tasks/intersection.h"
+#include "tasks/intersection.h"
 #include "render_support.h"
 #include "statistics.h"
 

@@ -7,7 +7,7 @@
 
 #include "../remote/call.h"
 #include "../remote/trace_calls.h"
-#include "pathlab/tasks/path_tracing.h"
+#include "tasks/path_tracing.h"
 
 namespace pathlab::calls {
 PATHLAB_REMOTE_CALL(SampleDiffuseDirection, 1, Vec3(Vec2));

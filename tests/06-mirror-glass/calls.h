@@ -7,7 +7,7 @@
 
 #include "../remote/call.h"
 #include "../remote/trace_calls.h"
-#include "pathlab/tasks/mirror_glass.h"
+#include "tasks/mirror_glass.h"
 
 namespace pathlab::calls {
 PATHLAB_REMOTE_CALL(Reflect, 1, Vec3(Vec3));

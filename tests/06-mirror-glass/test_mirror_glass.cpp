@@ -12,7 +12,7 @@
 #include "image_scenes.h"
 #include "image_test.h"
 #include "grading.h"
-#include "pathlab/bsdf.h"
+#include "core/bsdf.h"
 #include "calls.h"
 #include "render_support.h"
 #include "statistics.h"

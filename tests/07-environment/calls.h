@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "../remote/call.h"
-#include "pathlab/tasks/environment.h"
+#include "tasks/environment.h"
 
 namespace pathlab::calls {
 PATHLAB_REMOTE_CALL(DirectionToEquirect, 1, Point2(Vec3));

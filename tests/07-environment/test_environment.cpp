@@ -15,7 +15,7 @@
 #include "image_scenes.h"
 #include "image_test.h"
 #include "grading.h"
-#include "pathlab/random.h"
+#include "util/random.h"
 #include "calls.h"
 #include "statistics.h"
 

@@ -11,10 +11,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "pathlab/error.h"
-#include "pathlab/input_file.h"
-#include "pathlab/obj_file.h"
-#include "pathlab/scene_io.h"
+#include "scene/obj_file.h"
+#include "scene/scene_io.h"
+#include "util/error.h"
+#include "util/input_file.h"
 
 using namespace pathlab;
 

@@ -6,13 +6,13 @@
 #include <cmath>
 #include <cstring>
 
-#include "pathlab/camera.h"
-#include "pathlab/debug_views.h"
-#include "pathlab/image.h"
-#include "pathlab/inspect.h"
-#include "pathlab/render.h"
-#include "pathlab/scene_io.h"
-#include "pathlab/task_wiring.h"
+#include "core/camera.h"
+#include "debug/debug_views.h"
+#include "debug/inspect.h"
+#include "render/render.h"
+#include "render/task_wiring.h"
+#include "scene/scene_io.h"
+#include "util/image.h"
 
 using namespace pathlab;
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "pathlab/random.h"
+#include "util/random.h"
 
 using namespace pathlab;
 

@@ -9,12 +9,12 @@
 #include <string>
 
 #include "meshes.h"
-#include "pathlab/accelerator.h"
-#include "pathlab/procedural.h"
-#include "pathlab/random.h"
-#include "pathlab/scene_io.h"
-#include "pathlab/task_wiring.h"
-#include "pathlab/wide_bvh.h"
+#include "render/accelerator.h"
+#include "scene/procedural.h"
+#include "util/random.h"
+#include "scene/scene_io.h"
+#include "render/task_wiring.h"
+#include "render/wide_bvh.h"
 
 using namespace pathlab;
 

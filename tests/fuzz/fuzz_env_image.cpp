@@ -2,11 +2,11 @@
 // picks which), loaded as a scene's environment, then its importance
 // sampling built and used as the renderer would.
 #include "fuzz_support.h"
-#include "pathlab/error.h"
-#include "pathlab/lights.h"
-#include "pathlab/random.h"
-#include "pathlab/scene_io.h"
-#include "pathlab/task_wiring.h"
+#include "util/error.h"
+#include "core/lights.h"
+#include "util/random.h"
+#include "scene/scene_io.h"
+#include "render/task_wiring.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size < 1) return 0;

@@ -1,7 +1,7 @@
 // The OBJ path: a scene whose mesh is the input as an .obj file.
 #include "fuzz_support.h"
-#include "pathlab/error.h"
-#include "pathlab/scene_io.h"
+#include "util/error.h"
+#include "scene/scene_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string path = pathlab::fuzz::writeInput(data, size, "mesh.obj");

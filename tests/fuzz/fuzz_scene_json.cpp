@@ -1,7 +1,7 @@
 // The JSON scene loader on arbitrary text (seed corpus: media/scenes, tests/inputs).
 #include "fuzz_support.h"
-#include "pathlab/error.h"
-#include "pathlab/scene_io.h"
+#include "util/error.h"
+#include "scene/scene_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   try {

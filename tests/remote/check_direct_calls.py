@@ -5,7 +5,7 @@ in tests/02-intersection would test the reference, not the student. This
 check fails on any call of a task function in a suite's test files that is
 not written candidate::name(...) (comments and strings are ignored).
 
-usage: check_direct_calls.py TESTS_DIR FRAMEWORK_INCLUDE_DIR"""
+usage: check_direct_calls.py TESTS_DIR FRAMEWORK_DIR"""
 import re
 import sys
 from pathlib import Path
@@ -29,10 +29,10 @@ def task_functions(header: Path) -> set:
 
 
 def main() -> int:
-    tests, include = Path(sys.argv[1]), Path(sys.argv[2])
+    tests, framework = Path(sys.argv[1]), Path(sys.argv[2])
     problems = []
     for suite, header in SUITES.items():
-        names = task_functions(include / "pathlab" / "tasks" / header)
+        names = task_functions(framework / "tasks" / header)
         if not names:
             problems.append(f"{header}: found no function declarations (has its layout changed?)")
         for source in sorted((tests / suite).glob("test_*.cpp")):

@@ -2,10 +2,10 @@
 #pragma once
 
 #include "../support/render_support.h"
-#include "pathlab/random.h"
-#include "pathlab/task_wiring.h"
-#include "pathlab/tasks/direct_lighting.h"
-#include "pathlab/tasks/path_tracing.h"
+#include "util/random.h"
+#include "render/task_wiring.h"
+#include "tasks/direct_lighting.h"
+#include "tasks/path_tracing.h"
 #include "server.h"
 #include "trace_calls.h"
 

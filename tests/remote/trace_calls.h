@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "call.h"
-#include "pathlab/bsdf.h"
-#include "pathlab/scene.h"
-#include "pathlab/trace.h"
+#include "core/bsdf.h"
+#include "core/scene.h"
+#include "core/trace.h"
 
 namespace pathlab::calls {
 

@@ -18,17 +18,17 @@
 #include <utility>
 #include <vector>
 
-#include "pathlab/camera.h"
-#include "pathlab/hit.h"
-#include "pathlab/image.h"
-#include "pathlab/lights.h"
-#include "pathlab/bsdf.h"
-#include "pathlab/scene.h"
-#include "pathlab/tasks/bvh.h"
-#include "pathlab/tasks/camera_rays.h"
-#include "pathlab/tasks/direct_lighting.h"
-#include "pathlab/tasks/environment.h"
-#include "pathlab/tasks/intersection.h"
+#include "core/bsdf.h"
+#include "core/camera.h"
+#include "core/hit.h"
+#include "core/lights.h"
+#include "core/scene.h"
+#include "tasks/bvh.h"
+#include "tasks/camera_rays.h"
+#include "tasks/direct_lighting.h"
+#include "tasks/environment.h"
+#include "tasks/intersection.h"
+#include "util/image.h"
 
 namespace pathlab::wire {
 

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "pathlab/math.h"
+#include "util/math.h"
 
 namespace pathlab::test {
 

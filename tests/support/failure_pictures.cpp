@@ -8,7 +8,7 @@
 #include <numeric>
 #include <sstream>
 
-#include "pathlab/error.h"
+#include "util/error.h"
 
 namespace pathlab::test {
 

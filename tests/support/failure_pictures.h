@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "pathlab/image.h"
+#include "util/image.h"
 
 namespace pathlab::test {
 

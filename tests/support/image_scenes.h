@@ -7,7 +7,7 @@
 #include <string>
 
 #include "meshes.h"
-#include "pathlab/scene_io.h"
+#include "scene/scene_io.h"
 
 namespace pathlab::test {
 

@@ -13,8 +13,8 @@
 #include "../remote/image_calls.h"
 #include "check.h"
 #include "failure_pictures.h"
-#include "pathlab/error.h"
-#include "pathlab/image.h"
+#include "util/error.h"
+#include "util/image.h"
 
 namespace pathlab::test {
 namespace {

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "pathlab/scene.h"
+#include "core/scene.h"
 
 namespace pathlab::test {
 

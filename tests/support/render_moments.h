@@ -10,9 +10,9 @@
 #include <cmath>
 #include <vector>
 
-#include "pathlab/parallel.h"
-#include "pathlab/render.h"
-#include "pathlab/task_wiring.h"
+#include "render/render.h"
+#include "render/task_wiring.h"
+#include "util/parallel.h"
 
 namespace pathlab::test {
 

@@ -4,10 +4,10 @@
 
 #include <memory>
 
-#include "pathlab/accelerator.h"
-#include "pathlab/lights.h"
-#include "pathlab/task_wiring.h"
-#include "pathlab/trace.h"
+#include "core/lights.h"
+#include "core/trace.h"
+#include "render/accelerator.h"
+#include "render/task_wiring.h"
 
 namespace pathlab::test {
 

@@ -4,9 +4,9 @@
 #include <string>
 
 #include "check.h"
-#include "pathlab/procedural.h"
-#include "pathlab/scene.h"
-#include "pathlab/scene_io.h"
+#include "scene/procedural.h"
+#include "core/scene.h"
+#include "scene/scene_io.h"
 
 namespace pathlab::test {
 

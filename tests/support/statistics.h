@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "failure_pictures.h"
-#include "pathlab/math.h"
+#include "util/math.h"
 
 namespace pathlab::test {
 

@@ -1,0 +1,117 @@
+// Scene data: everything a render needs, as plain data owned by one struct.
+// Geometry is flattened at load time (transforms applied, quads split), and
+// every triangle and sphere is one entry of `primitives`, so accelerators and
+// the debugger refer to any surface by a single index.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/camera.h"
+#include "util/image.h"
+#include "util/math.h"
+
+namespace pathlab {
+
+enum class MaterialType { Diffuse, Mirror, Glass };
+
+struct Material {
+  std::string name;
+  MaterialType type = MaterialType::Diffuse;
+  Color albedo{0.8f};          // diffuse reflectance, or mirror/glass reflectance tint
+  Color transmittance{1.0f};   // glass only
+  float ior = 1.5f;            // glass only: index of refraction inside / outside
+  Color emission{0.0f};        // emitted radiance Le, on any material
+
+  bool isEmissive() const { return maxComponent(emission) > 0.0f; }
+};
+
+struct TriangleMesh {
+  std::string name;
+  std::vector<Point3> positions;
+  std::vector<Vec3> normals;          // empty, or one unit normal per position
+  std::vector<glm::uvec3> triangles;  // counter-clockwise = front face
+  uint32_t material = 0;
+};
+
+struct Sphere {
+  Point3 center{0.0f};
+  float radius = 1.0f;
+  uint32_t material = 0;
+};
+
+struct PointLight {
+  Point3 position{0.0f};
+  Color intensity{1.0f};  // radiant intensity, W/sr per channel
+};
+
+struct Environment {
+  Color color{0.0f};        // constant radiance, used when there is no image
+  std::string imagePath;    // equirectangular map (task 7), resolved path
+  Image image;              // loaded map (empty when imagePath is empty)
+  float scale = 1.0f;
+};
+
+struct RenderSettings {
+  int width = 400;
+  int height = 300;
+  int samplesPerPixel = 16;
+  int lightSamples = 1;  // samples per area light (task 4)
+  int maxDepth = 4;      // path length cap (task 5)
+  uint64_t seed = 0;
+};
+
+// One surface of the scene: triangle `index` of mesh `mesh`, or sphere
+// `index` when mesh == kSphere.
+struct PrimitiveRef {
+  static constexpr uint32_t kSphere = 0xffffffffu;
+  uint32_t mesh = kSphere;
+  uint32_t index = 0;
+
+  bool isSphere() const { return mesh == kSphere; }
+};
+
+struct Scene {
+  std::string source;  // file path, or "<default>" for the embedded scene
+  Camera camera;
+  RenderSettings render;
+  std::vector<Material> materials;
+  std::vector<TriangleMesh> meshes;
+  std::vector<Sphere> spheres;
+  std::vector<PointLight> pointLights;
+  std::optional<Environment> environment;
+  std::vector<PrimitiveRef> primitives;  // all triangles, then all spheres
+
+  // Rebuilds `primitives` from meshes and spheres; loaders call it once.
+  void indexPrimitives();
+  uint32_t materialOf(uint32_t primitive) const;
+  size_t triangleCount() const;
+};
+
+// ---- Limits every loader checks (docs/reliability.md, "Limits") ----------
+
+// Geometry and camera within +-1e12 of the origin: float32 maths squares
+// distances (a sphere test forms r^2 and |o - c|^2), so coordinates near
+// 1e19 overflow to infinity and a BVH's bounds become NaN. 1e12 leaves the
+// squares (1e24), their sums and the tree's surface areas far from float's
+// 3.4e38, and still spans a sky dome a million times a scene of 1e6 units.
+constexpr float kMaxSceneCoordinate = 1e12f;
+constexpr int kMaxImageSide = 16384;
+constexpr int64_t kMaxImagePixels = int64_t(1) << 26;  // 67 M pixels, 800 MB of float RGB
+
+// Throws pathlab::Error "WHERE: ..." unless 1 <= side <= kMaxImageSide and
+// the image has at most kMaxImagePixels.
+void checkResolution(int64_t width, int64_t height, const std::string& where);
+
+// Throws pathlab::Error naming the scene file and the object when a mesh
+// vertex, a sphere's extent or the camera lies outside kMaxSceneCoordinate
+// (or is not finite), or the camera has no usable direction.
+void checkSceneLimits(const Scene& scene);
+
+// Applies a transform to a mesh's positions and normals; a mirroring
+// transform also flips the winding, so front faces stay in front.
+void transformMesh(TriangleMesh& mesh, const glm::mat4& worldFromObject);
+
+}  // namespace pathlab

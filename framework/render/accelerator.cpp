@@ -1,0 +1,169 @@
+#include "render/accelerator.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+
+#include "render/scene_intersect.h"
+#include "render/task_wiring.h"
+
+namespace pathlab {
+
+std::string validateBvh(const Bvh& bvh, size_t primitiveCount, const std::vector<Aabb>* bounds) {
+  auto where = [](size_t i) { return "node " + std::to_string(i) + ": "; };
+  if (primitiveCount == 0) return bvh.nodes.empty() ? "" : "a scene without primitives needs no nodes";
+  if (bvh.nodes.empty()) return "no nodes";
+  if (bvh.primitives.size() != primitiveCount) {
+    return "primitives lists " + std::to_string(bvh.primitives.size()) + " entries for " +
+           std::to_string(primitiveCount) + " primitives";
+  }
+  std::vector<uint8_t> slotSeen(primitiveCount, 0), primitiveSeen(primitiveCount, 0), nodeSeen(bvh.nodes.size(), 0);
+  for (uint32_t p : bvh.primitives) {
+    if (p >= primitiveCount) return "primitives holds index " + std::to_string(p) + ", out of range";
+    if (primitiveSeen[p]++) return "primitive " + std::to_string(p) + " is listed twice";
+  }
+  // Walk the tree from the root; children must come after their parent, so
+  // the walk always ends.
+  std::vector<std::pair<uint32_t, uint32_t>> stack = {{0, 0}};  // (node, depth)
+  nodeSeen[0] = 1;
+  while (!stack.empty()) {
+    const auto [i, depth] = stack.back();
+    stack.pop_back();
+    const BvhNode& node = bvh.nodes[i];
+    if (depth > kMaxBvhDepth) return where(i) + "deeper than kMaxBvhDepth (" + std::to_string(kMaxBvhDepth) + ")";
+    if (node.isLeaf()) {
+      if (node.count > kMaxLeafSize) {
+        return where(i) + "leaf holds " + std::to_string(node.count) + " primitives, more than kMaxLeafSize (" +
+               std::to_string(kMaxLeafSize) + ")";
+      }
+      if (uint64_t(node.leftOrFirst) + node.count > primitiveCount) return where(i) + "leaf range out of bounds";
+      for (uint32_t s = node.leftOrFirst; s < node.leftOrFirst + node.count; ++s) {
+        if (slotSeen[s]++) return where(i) + "slot " + std::to_string(s) + " belongs to two leaves";
+        if (bounds && !node.bounds.contains((*bounds)[bvh.primitives[s]])) {
+          return where(i) + "leaf box does not contain primitive " + std::to_string(bvh.primitives[s]);
+        }
+      }
+      continue;
+    }
+    const uint32_t left = node.leftOrFirst;
+    if (left <= i || uint64_t(left) + 1 >= bvh.nodes.size()) {
+      return where(i) + "children at " + std::to_string(left) + " must come after their parent and exist";
+    }
+    for (uint32_t child : {left, left + 1}) {
+      if (nodeSeen[child]++) return where(child) + "reached twice";
+      if (!node.bounds.contains(bvh.nodes[child].bounds)) return where(child) + "box is not inside its parent's";
+      stack.push_back({child, depth + 1});
+    }
+  }
+  for (size_t s = 0; s < primitiveCount; ++s) {
+    if (!slotSeen[s]) return "slot " + std::to_string(s) + " is in no leaf";
+  }
+  return "";
+}
+
+double sahCost(const Bvh& bvh) {
+  if (bvh.nodes.empty()) return 0.0;
+  const double rootArea = bvh.nodes[0].bounds.surfaceArea();
+  if (!(rootArea > 0.0)) return 0.0;
+  double cost = 0.0;
+  for (const BvhNode& node : bvh.nodes) {
+    cost += double(node.bounds.surfaceArea()) / rootArea * (node.isLeaf() ? double(node.count) : 1.0);
+  }
+  return cost;
+}
+
+BvhStatistics bvhStatistics(const Bvh& bvh) {
+  BvhStatistics s;
+  s.nodes = bvh.nodes.size();
+  s.sahCost = sahCost(bvh);
+  s.leafSizes.assign(kMaxLeafSize + 1, 0);
+  if (bvh.nodes.empty()) return s;
+  std::vector<std::pair<uint32_t, uint32_t>> stack = {{0, 0}};
+  while (!stack.empty()) {
+    auto [i, depth] = stack.back();
+    stack.pop_back();
+    const BvhNode& node = bvh.nodes[i];
+    s.maxDepth = std::max(s.maxDepth, depth);
+    if (node.isLeaf()) {
+      ++s.leaves;
+      if (node.count >= s.leafSizes.size()) s.leafSizes.resize(node.count + 1, 0);
+      ++s.leafSizes[node.count];
+    } else {
+      stack.push_back({node.leftOrFirst, depth + 1});
+      stack.push_back({node.leftOrFirst + 1, depth + 1});
+    }
+  }
+  return s;
+}
+
+std::string formatBvhStatistics(const BvhStatistics& s) {
+  std::string text = "BVH: " + std::to_string(s.nodes) + " nodes, " + std::to_string(s.leaves) +
+                     " leaves, depth " + std::to_string(s.maxDepth);
+  char cost[64];
+  std::snprintf(cost, sizeof cost, ", SAH cost %.2f\n", s.sahCost);
+  text += cost;
+  text += "leaf sizes:";
+  for (size_t k = 1; k < s.leafSizes.size(); ++k) {
+    if (!s.leafSizes[k]) continue;
+    char entry[48];
+    std::snprintf(entry, sizeof entry, " %zu:%zu", k, s.leafSizes[k]);
+    text += entry;
+  }
+  return text + "\n";
+}
+
+std::optional<Traversal> traversalFromName(const std::string& name) {
+  if (name == "task3") return Traversal::Task3;
+  if (name == "fast") return Traversal::Fast;
+  return std::nullopt;
+}
+
+const char* traversalName(Traversal traversal) { return traversal == Traversal::Fast ? "fast" : "task3"; }
+
+Traversal defaultTraversal(const std::string& taskSummary) {
+  const std::string tasks = " " + taskSummary + " ";
+  const bool reference = tasks.find(" 2:reference ") != std::string::npos && tasks.find(" 3:reference ") != std::string::npos;
+  return reference ? Traversal::Fast : Traversal::Task3;
+}
+
+Accelerator::Accelerator(const Scene& scene, Traversal traversal) : scene_(scene), traversal_(traversal) {
+  if (scene.primitives.empty()) return;
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<Aabb> bounds = primitiveBounds(scene);
+  bvh_ = buildBvh(bounds);
+  buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::string problem = validateBvh(bvh_, scene.primitives.size(), &bounds);
+  if (!problem.empty()) {
+    static std::once_flag once;
+    std::call_once(once, [&] {
+      std::fprintf(stderr, "task 3: the BVH is not usable (%s); using brute-force intersection (slow)\n",
+                   problem.c_str());
+    });
+    bvh_ = Bvh{};
+    return;
+  }
+  geometry_ = LeafGeometry(scene, bvh_.primitives, kLinkedTasks.primitives);
+  if (traversal_ == Traversal::Fast) {
+    wide_ = WideBvh(bvh_, geometry_, kLinkedTasks.primitives);
+    buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  usesBvh_ = true;
+}
+
+std::optional<Hit> Accelerator::intersect(const Ray& ray, Interval range, TraversalStats* stats) const {
+  if (!usesBvh_) return intersectBruteForce(scene_, ray, range);
+  std::optional<PrimitiveHit> hit = traversal_ == Traversal::Fast && !stats
+                                         ? wide_.intersectClosest(ray, range)
+                                         : intersectClosest(bvh_, geometry_, ray, range, stats);
+  if (!hit || hit->primitive >= scene_.primitives.size()) return std::nullopt;
+  return surfaceHit(scene_, ray, *hit);
+}
+
+bool Accelerator::occluded(const Ray& ray, Interval range, TraversalStats* stats) const {
+  if (!usesBvh_) return intersectBruteForce(scene_, ray, range).has_value();
+  return traversal_ == Traversal::Fast && !stats ? wide_.intersectAny(ray, range)
+                                                 : intersectAny(bvh_, geometry_, ray, range, stats);
+}
+
+}  // namespace pathlab

@@ -1,0 +1,184 @@
+#include "render/render.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+
+#include "render/task_wiring.h"
+#include "tasks/direct_lighting.h"
+#include "tasks/path_tracing.h"
+#include "util/parallel.h"
+#include "util/progress.h"
+
+namespace pathlab {
+
+std::optional<Integrator> integratorFromName(const std::string& name) {
+  if (name == "path") return Integrator::Path;
+  if (name == "direct") return Integrator::Direct;
+  if (name == "preview") return Integrator::Preview;
+  if (name == "normals") return Integrator::Normals;
+  return std::nullopt;
+}
+
+const char* integratorName(Integrator integrator) {
+  switch (integrator) {
+    case Integrator::Path: return "path";
+    case Integrator::Direct: return "direct";
+    case Integrator::Preview: return "preview";
+    case Integrator::Normals: return "normals";
+  }
+  return "?";
+}
+
+std::optional<SampleSequence> sampleSequenceFromName(const std::string& name) {
+  if (name == "independent") return SampleSequence::Independent;
+  if (name == "stratified") return SampleSequence::Stratified;
+  if (name == "sobol") return SampleSequence::Sobol;
+  return std::nullopt;
+}
+
+const char* sampleSequenceName(SampleSequence sequence) {
+  return sequence == SampleSequence::Sobol ? "sobol" : sequence == SampleSequence::Stratified ? "stratified" : "independent";
+}
+
+Color estimateRadiance(TraceContext& context, const RenderOptions& options, const Ray& ray, Sampler& sampler) {
+  if (options.estimator) return options.estimator(context, ray, sampler);
+  const Scene& scene = context.scene;
+  switch (options.integrator) {
+    case Integrator::Path:
+      return options.strategy.isRecipe() ? tracePath(context, ray, sampler)
+                                         : traceWithStrategy(context, ray, sampler, options.strategy);
+    case Integrator::Direct: {
+      const std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
+      if (!hit) return context.background(ray.direction);
+      const Vec3 wo = -ray.direction;
+      const Bsdf bsdf = context.bsdf(*hit, wo);
+      return emittedRadiance(scene, *hit, wo) + estimateDirectLighting(context, *hit, bsdf, wo, sampler);
+    }
+    case Integrator::Preview: {
+      // An "eye light" at the camera: enough to recognise shapes and colours
+      // before any light transport exists.
+      const std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
+      if (!hit) return context.background(ray.direction);
+      const Material& material = scene.materials[hit->material];
+      const float cosine = std::abs(glm::dot(hit->shadingNormal, ray.direction));
+      return material.albedo * cosine + material.emission;
+    }
+    case Integrator::Normals: {
+      const std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
+      return hit ? 0.5f * (hit->shadingNormal + Vec3(1.0f)) : Color(0.0f);
+    }
+  }
+  return Color(0.0f);
+}
+
+Sampler pixelSampler(const RenderSettings& settings, IVec2 pixel, uint32_t sample, SampleSequence sequence) {
+  return Sampler(uint32_t(pixel.y) * uint32_t(settings.width) + uint32_t(pixel.x), sample, settings.seed, sequence,
+                 uint32_t(settings.samplesPerPixel));
+}
+
+Color estimatePixelSample(TraceContext& context, const RenderOptions& options, const CameraBasis& basis,
+                          uint32_t sample) {
+  const RenderSettings& settings = context.scene.render;
+  const IVec2 pixel = context.pixel;
+  Sampler sampler = pixelSampler(settings, pixel, sample, options.sampler);
+  const Point2 raster = pixelSamplePosition(pixel, sampler.next2D());
+  const Ray ray = generateCameraRay(context.scene.camera, basis, raster, {settings.width, settings.height});
+  return estimateRadiance(context, options, ray, sampler);
+}
+
+ProgressiveRender::ProgressiveRender(const Scene& scene, const RenderOptions& options)
+    : scene_(scene),
+      options_(options),
+      basis_(cameraBasis(scene.camera)),
+      accelerator_(scene, options.traversal),
+      lights_(Lights::fromScene(scene, kLinkedTasks.environment, options.environmentSampling)),
+      start_(std::chrono::steady_clock::now()),
+      sum_(size_t(scene.render.width) * size_t(scene.render.height), Color(0.0f)),
+      count_(sum_.size(), 0),
+      progress_(std::make_unique<ProgressBar>(uint64_t(sum_.size()) * uint64_t(scene.render.samplesPerPixel),
+                                              options.progress)) {}
+
+ProgressiveRender::~ProgressiveRender() = default;
+
+bool ProgressiveRender::step() {
+  const int width = scene_.render.width, height = scene_.render.height;
+  if (done() || cancelled_) return false;
+  if (options_.cancel && options_.cancel->load()) {
+    cancelled_ = true;
+    return false;
+  }
+  const int passBegin = passBegin_;
+  const int passEnd = std::min(scene_.render.samplesPerPixel, passBegin + passSize_);
+  forEachTile(width, height, options_.tileSize, options_.threads, [&](const Tile& tile) {
+    TraceContext context(scene_, accelerator_, lights_, kLinkedTasks.lobes);
+    uint64_t tileSamples = 0;
+    for (int y = tile.begin.y; y < tile.end.y; ++y) {
+      for (int x = tile.begin.x; x < tile.end.x; ++x) {
+        const uint32_t pixelIndex = uint32_t(y) * uint32_t(width) + uint32_t(x);
+        Color& pixelSum = sum_[pixelIndex];
+        context.pixel = {x, y};
+        for (int s = passBegin; s < passEnd; ++s) {
+          Color radiance = estimatePixelSample(context, options_, basis_, uint32_t(s));
+          if (isFinite(radiance)) {
+            pixelSum += radiance;
+          } else {
+            // Never clamp: report. A NaN sample counts as a sample of zero.
+            nonFinite_.fetch_add(1, std::memory_order_relaxed);
+            uint64_t seen = firstNonFinite_.load();
+            while (pixelIndex < seen && !firstNonFinite_.compare_exchange_weak(seen, pixelIndex)) {
+            }
+          }
+        }
+        count_[pixelIndex] = passEnd;
+        tileSamples += uint64_t(passEnd - passBegin);
+      }
+    }
+    rays_.fetch_add(context.rays, std::memory_order_relaxed);
+    samples_.fetch_add(tileSamples, std::memory_order_relaxed);
+    progress_->add(tileSamples);
+  }, options_.cancel);
+  if (options_.cancel && options_.cancel->load()) {
+    cancelled_ = true;  // some tiles of this pass may be missing
+    return false;
+  }
+  // Passes of 1, 1, 2, 4, ...: the image refines everywhere at once, so an
+  // interrupted render is still a whole picture.
+  passBegin_ = passEnd;
+  if (passes_++ > 0) passSize_ = std::min(passSize_ * 2, std::max(1, options_.maxPassSpp));
+  return !done();
+}
+
+Image ProgressiveRender::image() const {
+  Image image(scene_.render.width, scene_.render.height);
+  for (size_t i = 0; i < sum_.size(); ++i) {
+    if (count_[i] > 0) image.pixels[i] = sum_[i] / float(count_[i]);
+  }
+  return image;
+}
+
+RenderStats ProgressiveRender::stats() const {
+  RenderStats stats;
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  stats.samples = samples_.load();
+  stats.rays = rays_.load();
+  stats.nonFiniteSamples = nonFinite_.load();
+  if (stats.nonFiniteSamples > 0) {
+    const uint64_t p = firstNonFinite_.load(), width = uint64_t(scene_.render.width);
+    stats.firstNonFinitePixel = IVec2(int(p % width), int(p / width));
+  }
+  stats.completedSpp = count_.empty() ? 0 : *std::min_element(count_.begin(), count_.end());
+  stats.buildSeconds = accelerator_.buildSeconds();
+  stats.interrupted = stats.completedSpp < scene_.render.samplesPerPixel;
+  return stats;
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options) {
+  ProgressiveRender progressive(scene, options);
+  while (progressive.step()) {
+  }
+  return {progressive.image(), progressive.stats()};
+}
+
+}  // namespace pathlab

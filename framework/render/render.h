@@ -1,0 +1,129 @@
+// The multithreaded progressive render loop. Samples are taken in passes
+// (1, 1, 2, 4, ... samples per pixel, up to 64 at a time) over 16x16 tiles;
+// sample i of a pixel always uses the random stream (seed, pixel, i), so the
+// image is bit-identical for any thread count, tile size or pass schedule.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/scene.h"
+#include "core/trace.h"
+#include "render/accelerator.h"
+#include "render/strategies.h"
+#include "tasks/camera_rays.h"
+#include "util/image.h"
+#include "util/random.h"
+#include "util/ray.h"
+
+namespace pathlab {
+
+enum class Integrator {
+  Path,     // path tracing (task 5, using task 4 at every vertex)
+  Direct,   // emission + direct lighting at the first hit (task 4)
+  Preview,  // eye light: albedo * |cos| + emission — needs tasks 1–3 only
+  Normals,  // shading normal as colour
+};
+
+std::optional<Integrator> integratorFromName(const std::string& name);
+const char* integratorName(Integrator integrator);
+// --sampler: "independent" or "sobol".
+std::optional<SampleSequence> sampleSequenceFromName(const std::string& name);
+const char* sampleSequenceName(SampleSequence sequence);
+
+// Radiance along a camera ray, the one quantity every integrator estimates.
+// The names, one per level: estimatePixelSample (a pixel's sample i: camera
+// ray, then) -> estimateRadiance (the integrator the options choose, or
+// options.estimator) -> task 5's tracePath, task 4's estimateDirectLighting,
+// the framework's traceWithStrategy.
+using RadianceEstimator = std::function<Color(TraceContext& context, const Ray& ray, Sampler& sampler)>;
+
+struct RenderOptions {
+  Integrator integrator = Integrator::Path;
+  // For Integrator::Path: the recipe runs task 5's tracePath; any other
+  // strategy runs the framework's traceWithStrategy (render/strategies.h).
+  SamplingStrategy strategy;
+  EnvironmentSampling environmentSampling = EnvironmentSampling::Importance;
+  Traversal traversal = Traversal::Task3;  // --accel: how rays walk task 3's tree
+  SampleSequence sampler = SampleSequence::Sobol;  // --sampler: the random numbers (random.h)
+  int threads = 0;    // 0: all hardware threads
+  int tileSize = 16;
+  int maxPassSpp = 64;  // the largest pass; the GUI uses small passes to refresh often
+  bool progress = true;
+  const std::atomic<bool>* cancel = nullptr;  // set from a signal handler to stop early
+  RadianceEstimator estimator;  // when set, replaces the integrator (tests and debugger views render any per-sample quantity)
+};
+
+struct RenderStats {
+  double seconds = 0.0;
+  uint64_t samples = 0;           // camera samples taken
+  uint64_t rays = 0;              // every ray traced (camera, shadow, bounce)
+  uint64_t nonFiniteSamples = 0;  // NaN or Inf samples, left out of the image
+  std::optional<IVec2> firstNonFinitePixel;  // in scanline order
+  int completedSpp = 0;           // every pixel has at least this many samples
+  double buildSeconds = 0.0;      // acceleration structure build
+  bool interrupted = false;
+};
+
+struct RenderResult {
+  Image image;
+  RenderStats stats;
+};
+
+// Radiance arriving along one camera ray: options.estimator when set, else
+// the chosen integrator (and, for paths, strategy).
+Color estimateRadiance(TraceContext& context, const RenderOptions& options, const Ray& ray, Sampler& sampler);
+
+RenderResult render(const Scene& scene, const RenderOptions& options);
+
+class ProgressBar;
+
+// render(), one pass at a time: the GUI shows the image between passes.
+// Passes take 1, 1, 2, 4, ... samples per pixel (at most options.maxPassSpp);
+// the image after k samples per pixel is the same whatever the passes were.
+// `scene` must outlive this object.
+class ProgressiveRender {
+ public:
+  ProgressiveRender(const Scene& scene, const RenderOptions& options);
+  ~ProgressiveRender();
+
+  // Takes the next pass; false once every pixel has scene.render.samplesPerPixel
+  // samples or options.cancel was set (a cancelled pass leaves some pixels
+  // with fewer samples, which completedSpp() reports).
+  bool step();
+  bool done() const { return passBegin_ >= scene_.render.samplesPerPixel; }
+
+  Image image() const;       // the mean of each pixel's samples so far
+  RenderStats stats() const;  // so far
+
+ private:
+  const Scene& scene_;
+  RenderOptions options_;
+  CameraBasis basis_;
+  Accelerator accelerator_;
+  Lights lights_;
+  std::chrono::steady_clock::time_point start_;
+  std::vector<Color> sum_;
+  std::vector<int> count_;
+  int passBegin_ = 0, passSize_ = 1, passes_ = 0;
+  bool cancelled_ = false;
+  std::atomic<uint64_t> rays_{0}, samples_{0}, nonFinite_{0}, firstNonFinite_{UINT64_MAX};
+  std::unique_ptr<ProgressBar> progress_;
+};
+
+
+// The random numbers of sample `sample` of `pixel`, as render() draws them.
+Sampler pixelSampler(const RenderSettings& settings, IVec2 pixel, uint32_t sample, SampleSequence sequence);
+
+// Sample `sample` of pixel context.pixel, exactly as render() takes it (same
+// random numbers): the debugger re-traces single pixels with it.
+Color estimatePixelSample(TraceContext& context, const RenderOptions& options, const CameraBasis& basis,
+                          uint32_t sample);
+
+}  // namespace pathlab

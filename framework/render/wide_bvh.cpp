@@ -1,0 +1,465 @@
+// The render path's 8-wide tree (wide_bvh.h): built by collapsing task 3's
+// binary tree, walked with eight box tests and four triangle tests at a time.
+#include "render/wide_bvh.h"
+
+#include <array>
+#include <bit>
+
+#include "core/leaf_geometry.h"
+#include "render/lanes.h"
+
+// The AVX2 box tests are compiled in on x86-64 (GCC and Clang) and chosen at
+// run time, so one binary runs on any x86-64 CPU.
+#if defined(__x86_64__) && defined(__SSE2__) && (defined(__GNUC__) || defined(__clang__))
+#define PATHLAB_WIDE_BVH_AVX2 1
+#else
+#define PATHLAB_WIDE_BVH_AVX2 0
+#endif
+
+#if PATHLAB_WIDE_BVH_AVX2
+#include <immintrin.h>
+#endif
+
+namespace pathlab {
+namespace {
+
+using lanes::F4;
+
+float surfaceArea(const Aabb& box) {
+  const Vec3 e = box.extent();
+  return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+// Rounding in the slab test can shrink an interval that really encloses a
+// hit; pbrt-v4 widens exits by 2 gamma(3). Here the factor rides on
+// 1/direction, one more rounding, so 2 gamma(4).
+constexpr float kWidenExit = 1.0f + 2.0f * (4.0f * 0x1.0p-24f) / (1.0f - 4.0f * 0x1.0p-24f);
+
+// A wide traversal stacks at most kWidth - 1 children per level of task 3's tree.
+constexpr int kStackSize = (WideBvh::kWidth - 1) * int(kMaxBvhDepth) + 1;
+
+// Per ray, once: the slab test's constants, and the watertight triangle
+// test's permutation and shear (the reference task 2, pbrt-v4 section 6.5.3).
+struct RayLanes {
+  F4 origin[3], inverseDirection[3], widenedInverse[3];  // widenedInverse: for exits
+  int nearBound[3], farBound[3];  // rows of Node::bounds: the slab a ray enters first on each axis
+  int kx, ky, kz;                 // axes permuted so the direction's largest component is z
+  F4 shearX, shearY, shearZ;
+
+  explicit RayLanes(const Ray& ray) {
+    const Vec3 inverse = 1.0f / ray.direction;
+    for (int axis = 0; axis < 3; ++axis) {
+      origin[axis] = lanes::splat(ray.origin[axis]);
+      inverseDirection[axis] = lanes::splat(inverse[axis]);
+      widenedInverse[axis] = lanes::splat(inverse[axis] * kWidenExit);
+      nearBound[axis] = inverse[axis] < 0.0f ? axis + 3 : axis;
+      farBound[axis] = inverse[axis] < 0.0f ? axis : axis + 3;
+    }
+    const Vec3 a = glm::abs(ray.direction);
+    kz = (a.x > a.y) ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+    kx = (kz + 1) % 3;
+    ky = (kx + 1) % 3;
+    const Vec3& d = ray.direction;
+    shearX = lanes::splat(-d[kx] / d[kz]);
+    shearY = lanes::splat(-d[ky] / d[kz]);
+    shearZ = lanes::splat(1.0f / d[kz]);
+  }
+};
+
+// The box tests of one node: the entry t of each child box within
+// [tMin, tMax] into `entry`, and the mask of children hit. A ray lying in a
+// slab plane gives 0 * inf = NaN, which min/max pass over (lanes.h): that
+// axis sets no limit. Two versions with the same arithmetic, so the same
+// answers: four boxes per instruction (SSE2, or plain code elsewhere), and
+// eight (AVX2, where the CPU has it; see WideBvh::Instructions).
+struct BaselineBoxes {
+  const RayLanes& r;
+  int operator()(const WideBvh::Node& node, float tMin, float tMax, float* entry) const {
+    int mask = 0;
+    for (int half = 0; half < WideBvh::kWidth; half += 4) {
+      F4 near = lanes::splat(tMin), far = lanes::splat(tMax);
+      for (int axis = 0; axis < 3; ++axis) {
+        const F4 tNear =
+            (lanes::load(node.bounds[r.nearBound[axis]] + half) - r.origin[axis]) * r.inverseDirection[axis];
+        const F4 tFar =
+            (lanes::load(node.bounds[r.farBound[axis]] + half) - r.origin[axis]) * r.widenedInverse[axis];
+        near = lanes::max(tNear, near);
+        far = lanes::min(tFar, far);
+      }
+      lanes::store(entry + half, near);
+      mask |= (near <= far) << half;
+    }
+    return mask & ((1 << node.count) - 1);
+  }
+};
+
+#if PATHLAB_WIDE_BVH_AVX2
+static_assert(WideBvh::kWidth == 8);
+struct Avx2Boxes {
+  const RayLanes& r;
+  __m256 origin[3], inverseDirection[3], widenedInverse[3];
+
+  [[gnu::target("avx2")]] explicit Avx2Boxes(const RayLanes& lanes) : r(lanes) {
+    for (int axis = 0; axis < 3; ++axis) {
+      origin[axis] = _mm256_set_m128(r.origin[axis].v, r.origin[axis].v);
+      inverseDirection[axis] = _mm256_set_m128(r.inverseDirection[axis].v, r.inverseDirection[axis].v);
+      widenedInverse[axis] = _mm256_set_m128(r.widenedInverse[axis].v, r.widenedInverse[axis].v);
+    }
+  }
+  [[gnu::target("avx2")]] int operator()(const WideBvh::Node& node, float tMin, float tMax, float* entry) const {
+    __m256 near = _mm256_set1_ps(tMin), far = _mm256_set1_ps(tMax);
+    for (int axis = 0; axis < 3; ++axis) {
+      const __m256 tNear = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.bounds[r.nearBound[axis]]), origin[axis]),
+                                         inverseDirection[axis]);
+      const __m256 tFar = _mm256_mul_ps(_mm256_sub_ps(_mm256_load_ps(node.bounds[r.farBound[axis]]), origin[axis]),
+                                        widenedInverse[axis]);
+      near = _mm256_max_ps(tNear, near);  // as lanes::max: NaN in tNear keeps the running limit
+      far = _mm256_min_ps(tFar, far);
+    }
+    _mm256_store_ps(entry, near);
+    return _mm256_movemask_ps(_mm256_cmp_ps(near, far, _CMP_LE_OQ)) & ((1 << node.count) - 1);
+  }
+};
+#endif
+
+// The four lanes of a packet through the reference's watertight test, in its
+// order of operations (so each lane's t, b1, b2 are bit-identical to it).
+// Returns the lanes hit inside `range`; `onEdge` gets the lanes with an edge
+// function of exactly 0, which the reference settles in double precision.
+struct PacketHits {
+  alignas(16) float t[4], b1[4], b2[4];
+  int hit = 0, onEdge = 0;
+};
+
+[[gnu::always_inline]] inline void testPacket(const WideBvh::TrianglePacket& p, const RayLanes& r, Interval range,
+                                              PacketHits& out) {
+  const F4 zero = lanes::splat(0.0f);
+  F4 x[3], y[3], z[3];  // the vertices relative to the origin, permuted and sheared
+  for (int v = 0; v < 3; ++v) {
+    x[v] = lanes::load(p.vertex[v][r.kx]) - r.origin[r.kx];
+    y[v] = lanes::load(p.vertex[v][r.ky]) - r.origin[r.ky];
+    z[v] = lanes::load(p.vertex[v][r.kz]) - r.origin[r.kz];
+    x[v] = x[v] + r.shearX * z[v];
+    y[v] = y[v] + r.shearY * z[v];
+  }
+  const F4 e0 = x[1] * y[2] - y[1] * x[2];
+  const F4 e1 = x[2] * y[0] - y[2] * x[0];
+  const F4 e2 = x[0] * y[1] - y[0] * x[1];
+  const int onEdge = (e0 == zero) | (e1 == zero) | (e2 == zero);
+  const int mixedSigns = ((e0 < zero) | (e1 < zero) | (e2 < zero)) & ((e0 > zero) | (e1 > zero) | (e2 > zero));
+  const F4 det = e0 + e1 + e2;
+  const F4 tScaled = e0 * (z[0] * r.shearZ) + e1 * (z[1] * r.shearZ) + e2 * (z[2] * r.shearZ);
+  const F4 minDet = lanes::splat(range.min) * det, maxDet = lanes::splat(range.max) * det;
+  const int outside = ((det < zero) & ((tScaled >= minDet) | (tScaled <= maxDet))) |
+                      ((det > zero) & ((tScaled <= minDet) | (tScaled >= maxDet)));
+  const int lanesIn = int(p.lanes);
+  out.onEdge = lanesIn & onEdge;
+  out.hit = lanesIn & ~onEdge & ~mixedSigns & ~(det == zero) & ~outside;
+  if (!out.hit) return;
+  const F4 inverseDet = lanes::splat(1.0f) / det;
+  lanes::store(out.t, tScaled * inverseDet);
+  lanes::store(out.b1, e1 * inverseDet);
+  lanes::store(out.b2, e2 * inverseDet);
+  for (int mask = out.hit; mask; mask &= mask - 1) {  // as triangleHit: never an answer outside the range
+    const int lane = std::countr_zero(unsigned(mask));
+    if (!range.contains(out.t[lane])) out.hit &= ~(1 << lane);
+  }
+}
+
+std::optional<PrimitiveHit> laneOnEdge(const PrimitiveTests& tests, const WideBvh::TrianglePacket& p, int lane,
+                                       const Ray& ray, Interval range) {
+  auto vertex = [&](int v) { return Point3(p.vertex[v][0][lane], p.vertex[v][1][lane], p.vertex[v][2][lane]); };
+  return triangleHit(tests, ray, range, vertex(0), vertex(1), vertex(2), p.primitive[lane]);
+}
+
+// The hits in one leaf, each found within `range` as it stands at its turn:
+// each packet's nearest lane (the first on a tie, as a sequential test keeps
+// it), its lanes on an edge, then the spheres. `onHit` narrows the range
+// (closest hit) or returns true to stop (any hit); so does leafHits.
+template <class OnHit>
+bool leafHits(const WideBvh::Leaf& leaf, const std::vector<WideBvh::TrianglePacket>& packets,
+              const std::vector<WideBvh::SphereSlot>& spheres, const PrimitiveTests& tests, const RayLanes& r,
+              const Ray& ray, Interval& range, OnHit&& onHit) {
+  for (uint32_t k = 0; k < leaf.packetCount; ++k) {
+    const WideBvh::TrianglePacket& packet = packets[leaf.firstPacket + k];
+    PacketHits hits;
+    testPacket(packet, r, range, hits);
+    int nearest = -1;
+    for (int mask = hits.hit; mask; mask &= mask - 1) {
+      const int lane = std::countr_zero(unsigned(mask));
+      if (nearest < 0 || hits.t[lane] < hits.t[nearest]) nearest = lane;
+    }
+    if (nearest >= 0 &&
+        onHit(PrimitiveHit{hits.t[nearest], hits.b1[nearest], hits.b2[nearest], packet.primitive[nearest]})) {
+      return true;
+    }
+    for (int mask = hits.onEdge; mask; mask &= mask - 1) {
+      auto hit = laneOnEdge(tests, packet, std::countr_zero(unsigned(mask)), ray, range);
+      if (hit && onHit(*hit)) return true;
+    }
+  }
+  for (uint32_t k = 0; k < leaf.sphereCount; ++k) {
+    const WideBvh::SphereSlot& s = spheres[leaf.firstSphere + k];
+    auto hit = sphereHit(tests, ray, range, s.center, s.radius, s.primitive);
+    if (hit && onHit(*hit)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+WideBvh::WideBvh(const Bvh& bvh, const LeafGeometry& geometry, const PrimitiveTests& tests,
+                 Instructions instructions)
+    : tests_(tests) {
+#if PATHLAB_WIDE_BVH_AVX2
+  avx2_ = instructions == Instructions::Best && __builtin_cpu_supports("avx2");
+#else
+  (void)instructions;
+#endif
+  if (bvh.nodes.empty()) return;
+  // Primitives below each node (children come after their parents).
+  std::vector<uint32_t> below(bvh.nodes.size());
+  for (size_t i = bvh.nodes.size(); i-- > 0;) {
+    const BvhNode& node = bvh.nodes[i];
+    below[i] = node.isLeaf() ? node.count : below[node.leftOrFirst] + below[node.leftOrFirst + 1];
+  }
+  nodes_.reserve(bvh.nodes.size() / 3 + 1);
+  leaves_.reserve(bvh.nodes.size() / 2 + 1);
+  packets_.reserve(bvh.nodes.size() / 2 + 1);
+  nodes_.emplace_back();
+  if (below[0] <= kPacketSize) {  // the whole tree in one leaf: a root with one child
+    Node& root = nodes_[0];
+    for (int axis = 0; axis < 3; ++axis) {
+      root.bounds[axis][0] = bvh.nodes[0].bounds.min[axis];
+      root.bounds[axis + 3][0] = bvh.nodes[0].bounds.max[axis];
+    }
+    root.child[0] = kLeaf | addLeaf(bvh, geometry, 0);
+    root.count = 1;
+    return;
+  }
+  collapse(bvh, geometry, below, 0, 0);
+}
+
+// Wide node `wide` takes the place of binary interior node `binary`: start
+// from its two children and open the largest interior child until there
+// are kWidth (the surface area says which box rays reach most often). A
+// subtree of at most four primitives becomes one leaf, so its triangles fill
+// one packet instead of several half-empty ones.
+void WideBvh::collapse(const Bvh& bvh, const LeafGeometry& geometry, const std::vector<uint32_t>& below,
+                       uint32_t wide, uint32_t binary) {
+  auto opens = [&](uint32_t n) { return !bvh.nodes[n].isLeaf() && below[n] > kPacketSize; };
+  std::array<uint32_t, kWidth> children;
+  std::array<float, kWidth> openArea;  // surface area of a child that can be opened, else -1
+  uint32_t count = 0;
+  auto addChild = [&](uint32_t k, uint32_t n) {
+    children[k] = n;
+    openArea[k] = opens(n) ? surfaceArea(bvh.nodes[n].bounds) : -1.0f;
+  };
+  addChild(count++, bvh.nodes[binary].leftOrFirst);
+  addChild(count++, bvh.nodes[binary].leftOrFirst + 1);
+  while (count < kWidth) {
+    uint32_t largest = 0;
+    for (uint32_t k = 1; k < count; ++k) {
+      if (openArea[k] > openArea[largest]) largest = k;
+    }
+    if (openArea[largest] < 0.0f) break;
+    const uint32_t opened = bvh.nodes[children[largest]].leftOrFirst;
+    addChild(largest, opened);
+    addChild(count++, opened + 1);
+  }
+  Node node{};
+  node.count = count;
+  for (uint32_t k = 0; k < count; ++k) {
+    const BvhNode& child = bvh.nodes[children[k]];
+    for (int axis = 0; axis < 3; ++axis) {
+      node.bounds[axis][k] = child.bounds.min[axis];
+      node.bounds[axis + 3][k] = child.bounds.max[axis];
+    }
+    if (openArea[k] >= 0.0f) {
+      node.child[k] = uint32_t(nodes_.size());
+      nodes_.emplace_back();
+    } else {
+      node.child[k] = kLeaf | addLeaf(bvh, geometry, children[k]);
+    }
+  }
+  nodes_[wide] = node;
+  for (uint32_t k = 0; k < count; ++k) {
+    if (!(node.child[k] & kLeaf)) collapse(bvh, geometry, below, node.child[k], children[k]);
+  }
+}
+
+// One leaf holding every primitive below binary node `subtree`, in the
+// order task 3's leaves list them (read from `geometry`, which holds them in
+// that order: one pass through memory, no lookups in the scene).
+uint32_t WideBvh::addLeaf(const Bvh& bvh, const LeafGeometry& geometry, uint32_t subtree) {
+  Leaf out{uint32_t(packets_.size()), 0, uint32_t(spheres_.size()), 0};
+  int lane = kPacketSize;
+  auto add = [&](const LeafGeometry::Slot& slot) {
+    if (slot.isSphere) {
+      spheres_.push_back({slot.a, slot.b.x, slot.primitive});
+      ++out.sphereCount;
+      return;
+    }
+    if (lane == kPacketSize) {
+      packets_.emplace_back();
+      ++out.packetCount;
+      lane = 0;
+    }
+    TrianglePacket& packet = packets_.back();
+    const Point3 p[3] = {slot.a, slot.b, slot.c};
+    for (int k = 0; k < 3; ++k) {
+      for (int axis = 0; axis < 3; ++axis) packet.vertex[k][axis][lane] = p[k][axis];
+    }
+    packet.primitive[lane] = slot.primitive;
+    // A zero-area triangle has no normal, and the reference never reports a hit on it.
+    const Vec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+    if (n.x != 0.0f || n.y != 0.0f || n.z != 0.0f) packet.lanes |= 1u << lane;
+    ++lane;
+  };
+  uint32_t stack[kMaxBvhDepth + 1];  // not zeroed: only [0, size) is read
+  stack[0] = subtree;
+  for (int size = 1; size > 0;) {
+    const BvhNode& node = bvh.nodes[stack[--size]];
+    if (!node.isLeaf()) {
+      stack[size++] = node.leftOrFirst + 1;
+      stack[size++] = node.leftOrFirst;
+      continue;
+    }
+    for (uint32_t slot = node.leftOrFirst; slot < node.leftOrFirst + node.count; ++slot) add(geometry.slot(slot));
+  }
+  leaves_.push_back(out);
+  return uint32_t(leaves_.size() - 1);
+}
+
+double WideBvh::laneOccupancy() const {
+  size_t used = 0;
+  for (const TrianglePacket& p : packets_) used += size_t(std::popcount(p.lanes));
+  return packets_.empty() ? 0.0 : double(used) / double(kPacketSize * packets_.size());
+}
+
+// The walks, written once for both box tests. Each entry point below is
+// flattened (everything it calls inlined into it), so the AVX2 one is
+// compiled for AVX2 throughout and the baseline one never uses it.
+struct WideBvh::Walk {
+  template <class Boxes>
+  static std::optional<PrimitiveHit> closest(const WideBvh& bvh, const RayLanes& r, const Boxes& boxes,
+                                             const Ray& ray, Interval range);
+  template <class Boxes>
+  static bool any(const WideBvh& bvh, const RayLanes& r, const Boxes& boxes, const Ray& ray, Interval range);
+
+  [[gnu::flatten]] static std::optional<PrimitiveHit> closestBaseline(const WideBvh& bvh, const Ray& ray,
+                                                                      Interval range) {
+    const RayLanes r(ray);
+    return closest(bvh, r, BaselineBoxes{r}, ray, range);
+  }
+  [[gnu::flatten]] static bool anyBaseline(const WideBvh& bvh, const Ray& ray, Interval range) {
+    const RayLanes r(ray);
+    return any(bvh, r, BaselineBoxes{r}, ray, range);
+  }
+#if PATHLAB_WIDE_BVH_AVX2
+  [[gnu::target("avx2"), gnu::flatten]] static std::optional<PrimitiveHit> closestAvx2(const WideBvh& bvh,
+                                                                                      const Ray& ray,
+                                                                                      Interval range) {
+    const RayLanes r(ray);
+    return closest(bvh, r, Avx2Boxes(r), ray, range);
+  }
+  [[gnu::target("avx2"), gnu::flatten]] static bool anyAvx2(const WideBvh& bvh, const Ray& ray, Interval range) {
+    const RayLanes r(ray);
+    return any(bvh, r, Avx2Boxes(r), ray, range);
+  }
+#endif
+};
+
+std::optional<PrimitiveHit> WideBvh::intersectClosest(const Ray& ray, Interval range) const {
+  if (nodes_.empty()) return std::nullopt;
+#if PATHLAB_WIDE_BVH_AVX2
+  if (avx2_) return Walk::closestAvx2(*this, ray, range);
+#endif
+  return Walk::closestBaseline(*this, ray, range);
+}
+
+bool WideBvh::intersectAny(const Ray& ray, Interval range) const {
+  if (nodes_.empty()) return false;
+#if PATHLAB_WIDE_BVH_AVX2
+  if (avx2_) return Walk::anyAvx2(*this, ray, range);
+#endif
+  return Walk::anyBaseline(*this, ray, range);
+}
+
+template <class Boxes>
+std::optional<PrimitiveHit> WideBvh::Walk::closest(const WideBvh& bvh, const RayLanes& r, const Boxes& boxes,
+                                                   const Ray& ray, Interval range) {
+  struct Pending {
+    uint32_t item;
+    float tEntry;
+  };
+  std::array<Pending, kStackSize> stack;
+  int size = 0;
+  std::optional<PrimitiveHit> closest;
+  uint32_t item = 0;
+  while (true) {
+    if (item & kLeaf) {
+      const Leaf& leaf = bvh.leaves_[item & ~kLeaf];
+      leafHits(leaf, bvh.packets_, bvh.spheres_, bvh.tests_, r, ray, range, [&](const PrimitiveHit& hit) {
+        closest = hit;
+        range.max = hit.t;  // from now on only closer hits count
+        return false;
+      });
+    } else {
+      alignas(32) float entry[kWidth];
+      int mask = boxes(bvh.nodes_[item], range.min, range.max, entry);
+      if (mask) {
+        // The children hit, nearest first: visit the nearest, stack the rest.
+        Pending hit[kWidth];
+        int count = 0;
+        for (; mask; mask &= mask - 1) {
+          const int lane = std::countr_zero(unsigned(mask));
+          Pending p{bvh.nodes_[item].child[lane], entry[lane]};
+          int k = count++;
+          for (; k > 0 && hit[k - 1].tEntry > p.tEntry; --k) hit[k] = hit[k - 1];
+          hit[k] = p;
+        }
+        for (int k = count - 1; k > 0; --k) stack[size++] = hit[k];
+        item = hit[0].item;
+        continue;
+      }
+    }
+    // Pop the next subtree that can still hold a closer hit.
+    while (true) {
+      if (size == 0) return closest;
+      const Pending next = stack[--size];
+      if (next.tEntry <= range.max) {
+        item = next.item;
+        break;
+      }
+    }
+  }
+}
+
+template <class Boxes>
+bool WideBvh::Walk::any(const WideBvh& bvh, const RayLanes& r, const Boxes& boxes, const Ray& ray, Interval range) {
+  std::array<uint32_t, kStackSize> stack;
+  int size = 0;
+  uint32_t item = 0;
+  while (true) {
+    if (item & kLeaf) {
+      if (leafHits(bvh.leaves_[item & ~kLeaf], bvh.packets_, bvh.spheres_, bvh.tests_, r, ray, range,
+                   [](const PrimitiveHit&) { return true; })) {
+        return true;
+      }
+    } else {
+      alignas(32) float entry[kWidth];
+      const Node& node = bvh.nodes_[item];
+      int mask = boxes(node, range.min, range.max, entry);
+      if (mask) {
+        item = node.child[std::countr_zero(unsigned(mask))];
+        for (mask &= mask - 1; mask; mask &= mask - 1) stack[size++] = node.child[std::countr_zero(unsigned(mask))];
+        continue;
+      }
+    }
+    if (size == 0) return false;
+    item = stack[--size];
+  }
+}
+
+}  // namespace pathlab

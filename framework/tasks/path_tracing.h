@@ -1,0 +1,20 @@
+// Task 5 — path tracing. Implemented in tasks/05-path-tracing/path_tracing.cpp
+// (student) and solutions/05-path-tracing/path_tracing.cpp (reference).
+#pragma once
+
+#include "core/trace.h"
+#include "util/random.h"
+#include "util/ray.h"
+
+namespace pathlab {
+
+// T5.1: a direction for a diffuse bounce, in the local frame (normal = +z),
+// from u uniform in [0,1)^2; and the solid-angle pdf of choosing wi that way.
+Vec3 sampleDiffuseDirection(Vec2 u);
+float diffuseDirectionPdf(const Vec3& wi);
+
+// T5.2: the radiance arriving along `ray` (a camera ray): emission, direct
+// lighting at every vertex, bounces up to context.settings.maxDepth.
+Color tracePath(TraceContext& context, Ray ray, Sampler& sampler);
+
+}  // namespace pathlab

@@ -1,0 +1,137 @@
+#!/usr/bin/env python3
+"""docs/architecture.md held to the code.
+
+"The folders": the tree names only folders that exist (NN-name: the
+numbered task folders), and names every folder of the repository's top
+level and of framework/, apps/, tests/, media/ and docs/. A folder whose
+line says "not in the student release" may be missing where solutions/ is.
+
+"A camera ray, from main() to the pixel": every row's file exists and
+defines the function the row names (Class::name: a definition written
+Class::name(...) { ... }, or name(...) { ... } inside the class in a
+header), so a rename or a move fails here until the walk follows it.
+
+usage: check_architecture.py REPOSITORY"""
+import re
+import sys
+from pathlib import Path
+
+LISTED_IN_FULL = ("framework", "apps", "tests", "media", "docs")
+
+
+def section(text: str, heading: str) -> str:
+    start = text.find(f"\n## {heading}\n")
+    if start < 0:
+        raise SystemExit(f"check_architecture: docs/architecture.md has no section '## {heading}'")
+    end = text.find("\n## ", start + 1)
+    return text[start:end if end > 0 else len(text)]
+
+
+def tree_folders(block: str):
+    """(path, line) for every folder line of the tree: 'name/' after two spaces per level."""
+    stack = []
+    for line in block.splitlines():
+        m = re.match(r"( *)(\S+/)(?:\s|$)", line)
+        if not m:
+            continue
+        depth = len(m.group(1)) // 2
+        stack = stack[:depth] + [m.group(2).rstrip("/")]
+        yield "/".join(stack), line
+
+
+def check_tree(root: Path, text: str, problems: list):
+    block = re.search(r"```\n(.*?)```", section(text, "The folders"), re.S)
+    if not block:
+        raise SystemExit("check_architecture: 'The folders' has no tree (a ``` block)")
+    listed = {}
+    for path, line in tree_folders(block.group(1)):
+        listed[path] = line
+        matches = [p for p in root.glob(path.replace("NN-name", "[0-9][0-9]-*")) if p.is_dir()]
+        release = not (root / "solutions").exists() and "not in the student release" in line
+        if not matches and not release:
+            problems.append(f"The folders: {path}/ does not exist")
+    numbered = {re.sub(r"(^|/)[0-9][0-9]-[^/]+", r"\1NN-name", p) for p in listed}
+
+    def present(rel: str) -> bool:
+        return rel in listed or re.sub(r"(^|/)[0-9][0-9]-[^/]+", r"\1NN-name", rel) in numbered
+
+    def folders(base: Path):
+        return sorted(p for p in base.iterdir() if p.is_dir() and not p.name.startswith(("build", "__pycache__"))
+                      and (not p.name.startswith(".") or p.name == ".ci") and any(p.rglob("*.*")))
+
+    for folder in folders(root):
+        if not present(folder.name):
+            problems.append(f"The folders: {folder.name}/ is in the repository but not in the tree")
+        if folder.name in LISTED_IN_FULL:
+            for sub in folders(folder):
+                rel = f"{folder.name}/{sub.name}"
+                if not present(rel):
+                    problems.append(f"The folders: {rel}/ is in the repository but not in the tree")
+
+
+def strip_comments(code: str) -> str:
+    return re.sub(r"//[^\n]*|/\*.*?\*/", " ", code, flags=re.S)
+
+
+def closing_paren(code: str, start: int) -> int:
+    depth = 0
+    for i in range(start, len(code)):
+        if code[i] == "(":
+            depth += 1
+        elif code[i] == ")":
+            depth -= 1
+            if depth == 0:
+                return i
+    return -1
+
+
+def defines(code: str, function: str, header: bool) -> bool:
+    """True if `code` holds a definition of `function` (name or Class::name)."""
+    owner, _, name = function.rpartition("::")
+    prefixes = [re.escape(owner) + r"\s*::\s*"] if owner else [""]
+    if owner and header and re.search(rf"\b(class|struct)\s+{re.escape(owner)}\b", code):
+        prefixes.append("")  # defined inside the class body
+    for prefix in prefixes:
+        for m in re.finditer(rf"(?<![\w.>:~]){prefix}{re.escape(name)}\s*\(", code):
+            end = closing_paren(code, m.end() - 1)
+            if end < 0:
+                continue
+            rest = code[end + 1:]
+            # After the parameters: qualifiers, a trailing return type, then the body
+            # (or a constructor's member initialisers, then the body).
+            q = re.match(r"\s*(?:(?:const|noexcept|override|final)\b\s*)*(?:->[^;{]*)?(\{|:(?!:))", rest)
+            if q:
+                return True
+    return False
+
+
+def check_walk(root: Path, text: str, problems: list):
+    rows = re.findall(r"^\|\s*\d+\s*\|\s*`([^`]+)`\s*\|\s*`([^`]+)`\s*\|", section(text, "A camera ray, from main() to the pixel"),
+                      re.M)
+    if len(rows) < 10:
+        problems.append(f"A camera ray: found {len(rows)} rows of | step | `file` | `function` | (the table's layout changed?)")
+    for file, function in rows:
+        path = root / file
+        if not path.is_file():
+            if file.startswith("solutions/") and not (root / "solutions").exists():
+                continue
+            problems.append(f"A camera ray: {file} does not exist")
+        elif not defines(strip_comments(path.read_text()), function, path.suffix == ".h"):
+            problems.append(f"A camera ray: {file} does not define {function}")
+    return len(rows)
+
+
+def main() -> int:
+    root = Path(sys.argv[1]).resolve()
+    text = (root / "docs" / "architecture.md").read_text()
+    problems = []
+    check_tree(root, text, problems)
+    rows = check_walk(root, text, problems)
+    for p in problems:
+        print(p)
+    print(f"docs/architecture.md: the tree and {rows} hops of the camera ray's walk: {len(problems)} problems")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
