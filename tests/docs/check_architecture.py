@@ -4,7 +4,8 @@
 "The folders": the tree names only folders that exist (NN-name: the
 numbered task folders), and names every folder of the repository's top
 level and of framework/, apps/, tests/, media/ and docs/. A folder whose
-line says "not in the student release" may be missing where solutions/ is.
+line says "not in the student release", and the folders in it, may be
+missing where solutions/ is.
 
 "A camera ray, from main() to the pixel": every row's file exists and
 defines the function the row names (Class::name: a definition written
@@ -43,11 +44,13 @@ def check_tree(root: Path, text: str, problems: list):
     block = re.search(r"```\n(.*?)```", section(text, "The folders"), re.S)
     if not block:
         raise SystemExit("check_architecture: 'The folders' has no tree (a ``` block)")
-    listed = {}
+    listed, release_only = {}, []
     for path, line in tree_folders(block.group(1)):
         listed[path] = line
+        if "not in the student release" in line:
+            release_only.append(path)
         matches = [p for p in root.glob(path.replace("NN-name", "[0-9][0-9]-*")) if p.is_dir()]
-        release = not (root / "solutions").exists() and "not in the student release" in line
+        release = not (root / "solutions").exists() and any(path == r or path.startswith(r + "/") for r in release_only)
         if not matches and not release:
             problems.append(f"The folders: {path}/ does not exist")
     numbered = {re.sub(r"(^|/)[0-9][0-9]-[^/]+", r"\1NN-name", p) for p in listed}
