@@ -1,13 +1,8 @@
 #include "cli.h"
 
 #include <CLI/CLI.hpp>
-#include <sys/stat.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <charconv>
-#include <climits>
-#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <regex>
@@ -17,6 +12,7 @@
 #include "render/render.h"
 #include "scene/scene_io.h"
 #include "util/error.h"
+#include "util/platform.h"
 #include "util/progress.h"
 
 #ifndef PATHLAB_TASK_SUMMARY
@@ -84,28 +80,29 @@ uint64_t parseSeed(const std::string& text) {
 }
 
 // Fail before rendering, not after an hour, when the output cannot be written.
-// (POSIX calls, not std::filesystem's: those throw on a symlink loop or a
-// name too long, which must be an error line, not an internal error.)
+// (The platform's look-ups, not std::filesystem's: those throw on a symlink
+// loop or a name too long, which must be an error line, not an internal error.)
 void checkOutputPath(const std::string& path) {
   const std::string name = shown(path, 200);
   if (path.empty()) throw Error("-o: expected an output file name");
   if (!isWritableImagePath(path)) throw Error(name + ": unsupported output format (use .png, .exr, .hdr or .jpg)");
   std::string parent = std::filesystem::path(path).parent_path().string();
   if (parent.empty()) parent = ".";
-  struct stat info {};
-  if (::stat(parent.c_str(), &info) != 0) {
-    throw Error(name + ": output folder " + (errno == ENOENT ? "does not exist" : std::string("cannot be used: ") + std::strerror(errno)));
+  const FileStatus folder = fileStatus(parent);
+  if (!folder.found) {
+    throw Error(name + ": output folder " + (folder.missing ? "does not exist" : "cannot be used: " + folder.error));
   }
-  if (!S_ISDIR(info.st_mode)) throw Error(name + ": output folder does not exist (" + shown(parent) + " is not a folder)");
-  if (::access(parent.c_str(), W_OK) != 0) throw Error(name + ": output folder is not writable");
-  if (::stat(path.c_str(), &info) == 0) {
-    if (S_ISDIR(info.st_mode)) throw Error(name + ": is a folder, expected an image file name");
-  } else if (errno != ENOENT) {
-    throw Error(name + ": cannot write: " + std::strerror(errno));
+  if (folder.kind != FileKind::Folder) throw Error(name + ": output folder does not exist (" + shown(parent) + " is not a folder)");
+  if (!folderIsWritable(parent)) throw Error(name + ": output folder is not writable");
+  const FileStatus output = fileStatus(path);
+  if (output.found) {
+    if (output.kind == FileKind::Folder) throw Error(name + ": is a folder, expected an image file name");
+  } else if (!output.missing) {
+    throw Error(name + ": cannot write: " + output.error);
   }
-  if (std::filesystem::path(path).filename().string().size() + 9 > NAME_MAX) {  // + ".partial" and the dot
+  if (std::filesystem::path(path).filename().string().size() + 9 > maxFileNameBytes()) {  // + ".partial" and the dot
     throw Error(name + ": file name too long (the temporary name it is written through must fit " +
-                std::to_string(NAME_MAX) + " bytes)");
+                std::to_string(maxFileNameBytes()) + " bytes)");
   }
 }
 

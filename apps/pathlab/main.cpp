@@ -4,10 +4,9 @@
 #include <exception>
 #include <new>
 
-#include <unistd.h>
-
 #include "cli.h"
 #include "util/error.h"
+#include "util/platform.h"
 
 namespace {
 
@@ -19,9 +18,7 @@ std::atomic<bool> gRendering{false};
 // nothing to save, so the process ends at once, as the user asked.
 extern "C" void onInterrupt(int signal) {
   if (!gRendering.load()) {
-    static const char message[] = "pathlab: interrupted before rendering began\n";
-    [[maybe_unused]] ssize_t ignored = ::write(2, message, sizeof message - 1);
-    ::_exit(130);
+    pathlab::exitFromSignalHandler("pathlab: interrupted before rendering began\n", 130);
   }
   gCancel.store(true);
   std::signal(signal, SIG_DFL);  // a second Ctrl-C ends the program at once

@@ -5,13 +5,13 @@
 // max(NaN-prone value, running limit) keeps the limit.
 #pragma once
 
-#if defined(__SSE2__)
+#if defined(__SSE2__) || defined(_M_X64)  // every x86-64 compiler: GCC, Clang, MSVC
 #include <emmintrin.h>
 #endif
 
 namespace pathlab::lanes {
 
-#if defined(__SSE2__)
+#if defined(__SSE2__) || defined(_M_X64)  // every x86-64 compiler: GCC, Clang, MSVC
 
 struct F4 {
   __m128 v;

@@ -7,6 +7,7 @@
 
 #include "core/leaf_geometry.h"
 #include "render/lanes.h"
+#include "util/compiler.h"
 
 // The AVX2 box tests are compiled in on x86-64 (GCC and Clang) and chosen at
 // run time, so one binary runs on any x86-64 CPU.
@@ -131,8 +132,8 @@ struct PacketHits {
   int hit = 0, onEdge = 0;
 };
 
-[[gnu::always_inline]] inline void testPacket(const WideBvh::TrianglePacket& p, const RayLanes& r, Interval range,
-                                              PacketHits& out) {
+PATHLAB_ALWAYS_INLINE inline void testPacket(const WideBvh::TrianglePacket& p, const RayLanes& r, Interval range,
+                                             PacketHits& out) {
   const F4 zero = lanes::splat(0.0f);
   F4 x[3], y[3], z[3];  // the vertices relative to the origin, permuted and sheared
   for (int v = 0; v < 3; ++v) {
@@ -347,12 +348,12 @@ struct WideBvh::Walk {
   template <class Boxes>
   static bool any(const WideBvh& bvh, const RayLanes& r, const Boxes& boxes, const Ray& ray, Interval range);
 
-  [[gnu::flatten]] static std::optional<PrimitiveHit> closestBaseline(const WideBvh& bvh, const Ray& ray,
-                                                                      Interval range) {
+  PATHLAB_FLATTEN static std::optional<PrimitiveHit> closestBaseline(const WideBvh& bvh, const Ray& ray,
+                                                                     Interval range) {
     const RayLanes r(ray);
     return closest(bvh, r, BaselineBoxes{r}, ray, range);
   }
-  [[gnu::flatten]] static bool anyBaseline(const WideBvh& bvh, const Ray& ray, Interval range) {
+  PATHLAB_FLATTEN static bool anyBaseline(const WideBvh& bvh, const Ray& ray, Interval range) {
     const RayLanes r(ray);
     return any(bvh, r, BaselineBoxes{r}, ray, range);
   }

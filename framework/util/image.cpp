@@ -5,9 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -15,6 +12,7 @@
 
 #include "util/error.h"
 #include "util/input_file.h"
+#include "util/platform.h"
 
 namespace pathlab {
 namespace {
@@ -46,16 +44,9 @@ class QuietStderr {
     return;
 #endif
     std::fflush(stderr);
-    saved_ = ::dup(2);
-    const int null = ::open("/dev/null", O_WRONLY);
-    if (saved_ >= 0 && null >= 0) ::dup2(null, 2);
-    if (null >= 0) ::close(null);
+    saved_ = silenceStderr();
   }
-  ~QuietStderr() {
-    if (saved_ < 0) return;
-    ::dup2(saved_, 2);
-    ::close(saved_);
-  }
+  ~QuietStderr() { restoreStderr(saved_); }
   QuietStderr(const QuietStderr&) = delete;
   QuietStderr& operator=(const QuietStderr&) = delete;
 

@@ -1,13 +1,12 @@
 #include "util/parallel.h"
 
-#include <pthread.h>
-
 #include <algorithm>
-#include <csignal>
 #include <exception>
 #include <mutex>
 #include <thread>
 #include <vector>
+
+#include "util/platform.h"
 
 namespace pathlab {
 
@@ -43,18 +42,12 @@ void forEachTile(int width, int height, int tileSize, int threads,
   if (threads == 1) {
     worker();
   } else {
-    // Workers start with SIGINT and SIGTERM blocked, so Ctrl-C reaches the
-    // calling thread, which only waits: its handler runs at once (under
-    // ThreadSanitizer too, which defers a signal that lands in a thread busy
-    // computing until that thread calls into the C library).
-    sigset_t stop, previous;
-    sigemptyset(&stop);
-    sigaddset(&stop, SIGINT);
-    sigaddset(&stop, SIGTERM);
-    pthread_sigmask(SIG_BLOCK, &stop, &previous);
+    // Workers start with Ctrl-C kept from them, so it reaches the calling
+    // thread, which only waits: its handler runs at once.
     std::vector<std::thread> pool;
-    for (int i = 0; i < threads; ++i) pool.emplace_back(worker);
-    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+    withStopSignalsBlockedInNewThreads([&] {
+      for (int i = 0; i < threads; ++i) pool.emplace_back(worker);
+    });
     for (std::thread& thread : pool) thread.join();
   }
   if (failure) std::rethrow_exception(failure);

@@ -1,10 +1,10 @@
 #include "util/progress.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <string>
+
+#include "util/platform.h"
 
 namespace pathlab {
 
@@ -16,7 +16,7 @@ std::string formatRate(double perSecond) {
   return buffer;
 }
 
-bool ProgressBar::stderrIsTerminal() { return isatty(STDERR_FILENO) == 1; }
+bool ProgressBar::stderrIsTerminal() { return pathlab::stderrIsTerminal(); }
 
 ProgressBar::ProgressBar(uint64_t totalSamples, bool enabled)
     : total_(std::max<uint64_t>(1, totalSamples)),

@@ -18,6 +18,7 @@
 
 #include <cstdint>
 
+#include "util/compiler.h"
 #include "util/math.h"
 
 namespace pathlab {
@@ -156,7 +157,7 @@ class Sampler {
   // One jittered point in each cell of an nx x ny grid, the cells dealt to
   // the samples in an order of this dimension's own. Out of line: not the
   // default, and kept out of the Sobol path's inlined code.
-  [[gnu::noinline]] Vec2 nextStratified2D() {
+  PATHLAB_NOINLINE Vec2 nextStratified2D() {
     const uint64_t bits = mix64(key_ + 0x9e3779b97f4a7c15ULL * ++dimension_);
     const uint32_t columns = strataColumns(sampleCount_), rows = sampleCount_ / columns;
     const uint32_t stratum = permutationElement(sampleIndex_, sampleCount_, uint32_t(bits));

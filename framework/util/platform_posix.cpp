@@ -1,0 +1,165 @@
+// platform.h on Linux and macOS (POSIX). platform_windows.cpp is the other
+// half; each compiles to nothing on the other's systems.
+#if !defined(_WIN32)
+
+#include "util/platform.h"
+
+#include <fcntl.h>
+#include <pthread.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <climits>
+#include <csignal>
+#include <cstring>
+
+namespace pathlab {
+namespace {
+
+FileKind kindOf(mode_t mode) {
+  if (S_ISREG(mode)) return FileKind::Regular;
+  if (S_ISDIR(mode)) return FileKind::Folder;
+  if (S_ISFIFO(mode)) return FileKind::Pipe;
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return FileKind::Device;
+  if (S_ISSOCK(mode)) return FileKind::Socket;
+  return FileKind::Other;
+}
+
+// Closes the descriptor on every path out.
+struct Descriptor {
+  int fd = -1;
+  ~Descriptor() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+}  // namespace
+
+FileStatus fileStatus(const std::string& path) {
+  FileStatus status;
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) {
+    status.missing = errno == ENOENT;
+    status.error = std::strerror(errno);
+    return status;
+  }
+  status.found = true;
+  status.kind = kindOf(info.st_mode);
+  status.size = uint64_t(info.st_size);
+  return status;
+}
+
+FileRead readRegularFile(const std::string& path, size_t maxBytes) {
+  FileRead read;
+  // O_NONBLOCK: opening a FIFO does not wait for a writer (it is refused below).
+  Descriptor file{::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
+  if (file.fd < 0) {
+    read.error = std::strerror(errno);
+    return read;
+  }
+  read.opened = true;
+  struct stat info {};
+  if (::fstat(file.fd, &info) != 0) {
+    read.error = std::strerror(errno);
+    return read;
+  }
+  read.kind = kindOf(info.st_mode);
+  read.size = uint64_t(info.st_size);
+  if (read.kind != FileKind::Regular || read.size > maxBytes) return read;
+  read.bytes.resize(size_t(read.size));
+  size_t done = 0;
+  while (done < read.bytes.size()) {
+    const ssize_t n = ::read(file.fd, read.bytes.data() + done, read.bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      read.error = std::strerror(errno);
+      return read;
+    }
+    if (n == 0) break;  // the file shrank while we read: what is there is what we have
+    done += size_t(n);
+  }
+  read.bytes.resize(done);
+  return read;
+}
+
+std::string writeFileDurably(const std::string& path, std::string_view bytes) {
+  Descriptor file{::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644)};
+  if (file.fd < 0) return std::strerror(errno);
+  auto fail = [&](int error) {
+    ::close(file.fd);
+    file.fd = -1;
+    ::unlink(path.c_str());
+    return std::string(std::strerror(error));
+  };
+  size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(file.fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return fail(n < 0 ? errno : ENOSPC);
+    done += size_t(n);
+  }
+  // A full disk or a failing device can report only here (NFS, delayed allocation).
+  if (::fsync(file.fd) != 0 && errno != EINVAL && errno != EROFS) return fail(errno);
+  const int descriptor = file.fd;
+  file.fd = -1;
+  if (::close(descriptor) != 0) {
+    const int error = errno;
+    ::unlink(path.c_str());
+    return std::strerror(error);
+  }
+  return "";
+}
+
+std::string replaceFile(const std::string& from, const std::string& to) {
+  return ::rename(from.c_str(), to.c_str()) == 0 ? "" : std::strerror(errno);
+}
+
+void removeFileQuietly(const std::string& path) { ::unlink(path.c_str()); }
+
+bool folderIsWritable(const std::string& path) { return ::access(path.c_str(), W_OK) == 0; }
+
+size_t maxFileNameBytes() { return NAME_MAX; }
+
+bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) == 1; }
+
+int silenceStderr() {
+  const int saved = ::dup(STDERR_FILENO);
+  const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+  if (saved >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
+  if (null >= 0) ::close(null);
+  return saved;
+}
+
+void restoreStderr(int token) {
+  if (token < 0) return;
+  ::dup2(token, STDERR_FILENO);
+  ::close(token);
+}
+
+void withStopSignalsBlockedInNewThreads(const std::function<void()>& body) {
+  // Threads inherit the mask of the thread that starts them. Under
+  // ThreadSanitizer too this matters: it defers a signal that lands in a
+  // thread busy computing until that thread calls into the C library.
+  sigset_t stop, previous;
+  sigemptyset(&stop);
+  sigaddset(&stop, SIGINT);
+  sigaddset(&stop, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop, &previous);
+  try {
+    body();
+  } catch (...) {
+    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+    throw;
+  }
+  pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+}
+
+void exitFromSignalHandler(std::string_view message, int code) {
+  [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, message.data(), message.size());
+  ::_exit(code);
+}
+
+}  // namespace pathlab
+
+#endif  // !_WIN32

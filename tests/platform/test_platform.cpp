@@ -1,0 +1,90 @@
+// The operating-system layer (framework/util/platform.h), through the
+// functions built on it: files read whole or refused with a reason, written
+// atomically, folders, stderr silenced, workers started. One source for
+// both halves: CTest `platform` runs it on Linux (platform_posix.cpp);
+// tools/windows-check cross-compiles it with mingw-w64 and runs it under
+// Wine (platform_windows.cpp). Plain main(), so that build needs nothing
+// but the compiler. Run from a scratch folder: it writes there.
+#include <atomic>
+#include <cstdio>
+#include <string>
+
+#include "util/error.h"
+#include "util/input_file.h"
+#include "util/parallel.h"
+#include "util/platform.h"
+
+using namespace pathlab;
+
+namespace {
+
+int passes = 0, failures = 0;
+
+void expect(bool ok, const std::string& what) {
+  std::printf("%s %s\n", ok ? "ok  " : "FAIL", what.c_str());
+  (ok ? passes : failures) += 1;
+}
+
+template <class F>
+std::string errorOf(F f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+void run() {
+  writeFileAtomically("platform-out.txt", "hello");
+  expect(readInputFile("platform-out.txt", "text file", 100) == "hello", "a file written atomically reads back");
+  writeFileAtomically("platform-out.txt", "second");
+  expect(readInputFile("platform-out.txt", "text file", 100) == "second", "an existing file is replaced");
+  expect(!fileStatus(partialPathFor("platform-out.txt")).found, "no temporary file is left behind");
+  expect(requireRegularFile("platform-out.txt", "text file") == 6, "a regular file's size");
+
+  std::string e = errorOf([] { readInputFile("platform-out.txt", "text file", 3); });
+  expect(contains(e, "more than the"), "a file over the limit is refused: " + e);
+  e = errorOf([] { readInputFile("no-such-file.txt", "scene file", 100); });
+  expect(contains(e, "no-such-file.txt: cannot open scene file: "), "a missing file: " + e);
+  createFolders("platform-folder/inner");
+  e = errorOf([] { readInputFile("platform-folder", "scene file", 100); });
+  expect(contains(e, "platform-folder: is a folder, expected a scene file"), "a folder read as a file: " + e);
+  e = errorOf([] { requireRegularFile("platform-folder", "image"); });
+  expect(contains(e, "is a folder, expected an image"), "a folder looked up as a file: " + e);
+
+  const FileStatus missing = fileStatus("no-such-folder/x.png");
+  expect(!missing.found && missing.missing && !missing.error.empty(), "a missing path: " + missing.error);
+  const FileStatus folder = fileStatus("platform-folder");
+  expect(folder.found && folder.kind == FileKind::Folder, "a folder's kind");
+  expect(folderIsWritable("platform-folder"), "a folder of ours is writable");
+  expect(maxFileNameBytes() >= 255, "file names of 255 bytes");
+  e = errorOf([] { writeFileAtomically("no-such-folder/x.txt", "x"); });
+  expect(contains(e, "no-such-folder/x.txt: cannot write: "), "a write into a missing folder: " + e);
+
+  // What a library prints while stderr is silenced must not appear (the
+  // runner checks the output for this line).
+  const int saved = silenceStderr();
+  std::fprintf(stderr, "SILENCED STDERR LEAKED\n");
+  std::fflush(stderr);
+  restoreStderr(saved);
+  std::fprintf(stderr, "stderr restored\n");
+
+  std::atomic<int> pixels{0};
+  forEachPixel(37, 11, 4, [&](int, int) { pixels.fetch_add(1); });
+  expect(pixels.load() == 37 * 11, "forEachPixel on 4 threads visits every pixel once");
+}
+
+}  // namespace
+
+int main() {
+  try {
+    run();
+  } catch (const std::exception& e) {
+    expect(false, std::string("stopped by an exception: ") + e.what());
+  }
+  std::printf("%d passed, %d failed\n", passes, failures);
+  return failures == 0 ? 0 : 1;
+}
