@@ -167,13 +167,13 @@ def main() -> int:
     problems += find_cycles(graph)
 
     checked = []
-    defined = {name: symbols(built)[0] for name, built in binaries.items()}
+    listed = {name: symbols(built) for name, built in binaries.items()}  # (defined, used), one nm per layer
     for name, built in sorted(binaries.items()):
         if not built:
             continue
         checked.append(name)
-        allowed = set().union(*(defined.get(layer, set()) for layer in reach[name]))
-        _, used = symbols(built)
+        allowed = set().union(*(listed[layer][0] for layer in reach[name] if layer in listed))
+        used = listed[name][1]
         problems += [f"{name}: {Path(built[0]).name} uses {symbol}, which no layer it sits on defines"
                      for symbol in sorted(used - allowed)]
     for p in problems:
