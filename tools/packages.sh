@@ -5,7 +5,7 @@
 
 # What the grader builds the suites with (Gradescope installs only these).
 pathlab_core=(build-essential cmake ninja-build pkg-config python3 libglm-dev libopenimageio-dev
-              doctest-dev nlohmann-json3-dev libcli11-dev libpugixml-dev)
+              doctest-dev nlohmann-json3-dev libcli11-dev libpugixml-dev libfast-float-dev)
 # The whole project: the core, Embree for the benchmark, GLFW and Dear ImGui for the GUI, plots.
 pathlab_build=("${pathlab_core[@]}" git libembree-dev libglfw3-dev libimgui-dev python3-matplotlib)
 # The tests: the GUI on a virtual display (Xvfb, Mesa's software OpenGL) looked
@@ -15,6 +15,13 @@ pathlab_test=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick bubblewrap)
 pathlab_grading=("${pathlab_core[@]}" bubblewrap util-linux)
 # The hardening jobs: clang and its sanitizer and libFuzzer runtime.
 pathlab_hardening=(clang libclang-rt-14-dev)
+# Clang with libc++ (the macOS toolchain; preset clang-libcxx).
+pathlab_libcxx=(clang libc++-14-dev libc++abi-14-dev)
+# The aarch64 check (tools/aarch64-check): the cross compiler, qemu run through
+# binfmt_misc, and mmdebstrap to make an arm64 root with the libraries below.
+pathlab_aarch64=(cmake ninja-build pkg-config python3 g++-aarch64-linux-gnu qemu-user-static binfmt-support mmdebstrap)
+pathlab_aarch64_root=(libc6-dev libstdc++-12-dev libglm-dev libopenimageio-dev doctest-dev nlohmann-json3-dev
+                      libcli11-dev libpugixml-dev libfast-float-dev)
 # Plots (make-report, the demos' figures).
 pathlab_plots=(python3-matplotlib)
 

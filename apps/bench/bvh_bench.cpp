@@ -173,6 +173,7 @@ struct SetResult {
   size_t fastMismatches = 0;         // rays where it differs from task 3 at all (primitive, t, or blocked)
 };
 
+#ifdef PATHLAB_HAVE_EMBREE  // only the Embree comparison asks
 // Does the ray hit triangle `primitive` at about distance t, by a
 // double-precision Moller-Trumbore with edges counted as inside?
 bool hitsInDouble(const Scene& scene, const Ray& ray, uint32_t primitive, float t) {
@@ -190,6 +191,7 @@ bool hitsInDouble(const Scene& scene, const Ray& ray, uint32_t primitive, float 
   constexpr double kEdge = 1e-9;
   return b1 >= -kEdge && b2 >= -kEdge && b1 + b2 <= 1.0 + kEdge && std::abs(exact - t) <= 1e-4 * exact;
 }
+#endif
 
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "util/error.h"
+#include "util/platform.h"
 
 #ifndef PATHLAB_SOURCE_DIR
 #define PATHLAB_SOURCE_DIR "."
@@ -34,7 +35,7 @@ std::string python() { return fs::exists("/usr/bin/python3") ? "/usr/bin/python3
 
 void writeFigure(const Figure& figure, const std::string& path) {
   const fs::path target(path);
-  const fs::path work = fs::temp_directory_path() / ("pathlab-demo-" + std::to_string(::getpid()));
+  const fs::path work = fs::temp_directory_path() / ("pathlab-demo-" + std::to_string(currentProcessId()));
   fs::create_directories(work);
   nlohmann::json spec = {{"title", figure.title}, {"out", fs::absolute(target).string()}, {"plots", nlohmann::json::array()}};
   int imageCount = 0;

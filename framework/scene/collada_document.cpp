@@ -15,6 +15,17 @@ namespace {
 
 std::string printable(std::string_view text) { return printableLine(text); }
 
+// "/COLLADA/library_nodes/node/node": where an element is, as pugixml's
+// xml_node::path() says it. Not that function: it returns a std::string,
+// which a libc++ build cannot take from Debian's libstdc++-built pugixml.
+std::string elementPath(pugi::xml_node node) {
+  std::vector<std::string_view> names;
+  for (; node && node.type() == pugi::node_element; node = node.parent()) names.emplace_back(node.name());
+  std::string path;
+  for (auto name = names.rbegin(); name != names.rend(); ++name) (path += '/') += *name;
+  return path;
+}
+
 }  // namespace
 
 std::string formatted(const Vec3& v) {
@@ -43,7 +54,6 @@ void Document::fail(const std::string& where, const std::string& what) const {
   throw Error(printable(file_ + ": " + where + ": " + what));
 }
 
-
 // Every element with an id, walked without recursion; refuses nesting
 // deeper than kMaxXmlDepth.
 void Document::indexIds(pugi::xml_node root) {
@@ -52,7 +62,7 @@ void Document::indexIds(pugi::xml_node root) {
     auto [node, depth] = pending.back();
     pending.pop_back();
     if (depth > kMaxXmlDepth) {
-      fail(node.path().substr(0, 80), "elements nest deeper than " + std::to_string(kMaxXmlDepth) + " levels");
+      fail(elementPath(node).substr(0, 80), "elements nest deeper than " + std::to_string(kMaxXmlDepth) + " levels");
     }
     if (const char* id = node.attribute("id").value(); *id) ids_[id] = node;
     for (pugi::xml_node child : node.children()) pending.emplace_back(child, depth + 1);

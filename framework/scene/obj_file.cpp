@@ -12,6 +12,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include <fast_float/fast_float.h>
+
 #include "util/error.h"
 #include "util/input_file.h"
 
@@ -80,8 +82,10 @@ class ObjParser {
     for (int k = 0; k < 3; ++k) {
       std::string_view t = token(rest);
       if (t.empty()) fail(std::string("expected 3 numbers for a ") + what);
+      // fast_float is std::from_chars for floats, which libc++ (macOS)
+      // lacks before LLVM 20: exact, locale-free, the whole token or nothing.
       float value = 0.0f;
-      auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), value);
+      auto [end, error] = fast_float::from_chars(t.data(), t.data() + t.size(), value);
       if (error != std::errc() || end != t.data() + t.size() || !std::isfinite(value)) {
         fail(std::string(what) + " component " + inQuotes(t, 40) + " is not a finite number");
       }

@@ -1,8 +1,5 @@
 #include "util/image.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +8,7 @@
 #include <mutex>
 
 #include "util/error.h"
+#include "util/image_codec.h"
 #include "util/input_file.h"
 #include "util/platform.h"
 
@@ -97,83 +95,68 @@ void writeImage(const Image& image, const std::string& finalPath, const ImageMet
   // codecs' own file writes do not report every failure: a full disk gave a
   // truncated PNG and exit 0, libjpeg printed its own line).
   const std::string ext = lowerExtension(finalPath);
-  auto out = OIIO::ImageOutput::create(ext.substr(1));
-  if (!out || !out->supports("ioproxy")) {
-    throw Error(shown(finalPath, 200) + ": cannot create an in-memory " + ext + " writer: " + oneLine(OIIO::geterror()));
-  }
   const bool linear = isFloatFormat(ext);
-  OIIO::ImageSpec spec(image.width, image.height, 3, linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-  spec.attribute("oiio:ColorSpace", linear ? "Linear" : "sRGB");
-  spec.attribute("Software", "PathLab");
-  if (linear) spec.attribute("compression", "zip");
-  for (const auto& [key, value] : metadata) spec.attribute(key, value);
-
-  std::vector<unsigned char> bytes;
-  OIIO::Filesystem::IOVecOutput memory(bytes);
-  bool ok = out->set_ioproxy(&memory) && out->open(finalPath, spec);
-  if (ok && linear) {
-    ok = out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
-  } else if (ok) {
-    ok = out->write_image(OIIO::TypeDesc::UINT8, encodeSrgb8(image).data());
+  std::vector<const char*> keys, values;
+  for (const auto& [key, value] : metadata) {
+    keys.push_back(key.c_str());
+    values.push_back(value.c_str());
   }
-  if (!ok || !out->close()) throw Error(shown(finalPath, 200) + ": cannot encode image: " + oneLine(out->geterror()));
-  writeFileAtomically(finalPath, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+  const std::vector<uint8_t> srgb = linear ? std::vector<uint8_t>() : encodeSrgb8(image);
+  const void* pixels = linear ? static_cast<const void*>(image.pixels.data()) : srgb.data();
+  std::string bytes;
+  const CodecByteSink sink = [](void* context, const unsigned char* data, size_t size) {
+    static_cast<std::string*>(context)->assign(reinterpret_cast<const char*>(data), size);
+  };
+  char error[kCodecErrorBytes] = "";
+  if (!codecEncode(ext.c_str() + 1, image.width, image.height, linear, pixels, keys.data(), values.data(),
+                   int(keys.size()), sink, &bytes, error)) {
+    throw Error(shown(finalPath, 200) + ": " + oneLine(error));
+  }
+  writeFileAtomically(finalPath, bytes);
 }
 
 Image readImage(const std::string& path) {
   const size_t fileBytes = requireRegularFile(path, "image file");
-  // OpenImageIO's own limits on what a header may claim: a truncated EXR
-  // claiming a huge image made OpenEXR allocate 1.8 GB before failing
-  // (found by fuzzing). 1 GB covers an 8192 x 4096 map of 4 float channels.
-  static std::once_flag limitsSet;
-  std::call_once(limitsSet, [] {
-    OIIO::attribute("limits:channels", 16);
-    OIIO::attribute("limits:imagesize_MB", 1024);
-    OIIO::attribute("openexr:core", 1);
-  });
   const QuietStderr quiet;  // until the function returns or throws (the message is printed later)
   // Only the reader the extension names: given a whole file name,
   // OpenImageIO tries every reader it has (TIFF, GIF, RAW, video, ...) on a
   // file its extension's reader rejects, which lets any input reach them all.
   std::string format = std::filesystem::path(path).extension().string();
   if (!format.empty()) format.erase(0, 1);
-  auto in = OIIO::ImageInput::create(format.empty() ? path : format);
-  if (!in) throw Error(shown(path, 200) + ": cannot read image: " + oneLine(OIIO::geterror()));
-  OIIO::ImageSpec openedSpec;
-  if (!in->open(path, openedSpec)) {
-    throw Error(shown(path, 200) + ": cannot read image as a ." + format + " file: " + oneLine(in->geterror()));
-  }
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0) {
+  CodecHeader header{};
+  char error[kCodecErrorBytes] = "";
+  const std::unique_ptr<CodecReader, void (*)(CodecReader*)> reader(
+      codecOpen(path.c_str(), format.empty() ? path.c_str() : format.c_str(), &header, error), codecClose);
+  if (!reader) throw Error(shown(path, 200) + ": " + oneLine(error));
+  if (header.width <= 0 || header.height <= 0 || header.channels <= 0) {
     throw Error(shown(path, 200) + ": image has no pixels");
   }
   // At most 2^25 pixels (8192 x 4096): the image is allocated from the
   // header before any pixel is read, so a truncated file claiming a huge
   // size must not cost more than that (400 MB; fuzzing found a 1.8 GB case).
-  const int64_t pixels = int64_t(spec.width) * spec.height;
+  const int64_t pixels = int64_t(header.width) * header.height;
   if (pixels > (int64_t(1) << 25)) {
-    throw Error(shown(path, 200) + ": image is too large (" + std::to_string(spec.width) + "x" +
-                std::to_string(spec.height) + ", at most 33.5 million pixels)");
+    throw Error(shown(path, 200) + ": image is too large (" + std::to_string(header.width) + "x" +
+                std::to_string(header.height) + ", at most 33.5 million pixels)");
   }
   // Nor may a small file claim a big image: no codec these formats use packs
   // more than about 1,000 bytes of pixels into one (deflate's limit is 1032:1,
   // run-length codes 64:1), so a header claiming over 4,096 times the file's
   // size is corrupt. Checked above 2^22 pixels only, where the image costs
   // 48 MB. (Fuzzing: a 576-byte EXR claiming 7501926 x 4 cost 2 GB under ASan.)
-  const int64_t claimedBytes = pixels * spec.nchannels * int64_t(spec.format.size());
+  const int64_t claimedBytes = pixels * header.channels * int64_t(header.bytesPerChannel);
   if (pixels > (int64_t(1) << 22) && claimedBytes > 4096 * int64_t(fileBytes)) {
-    throw Error(shown(path, 200) + ": image is truncated or corrupt: its header claims " + std::to_string(spec.width) + "x" +
-                std::to_string(spec.height) + " pixels but the file has only " + std::to_string(fileBytes) +
+    throw Error(shown(path, 200) + ": image is truncated or corrupt: its header claims " + std::to_string(header.width) + "x" +
+                std::to_string(header.height) + " pixels but the file has only " + std::to_string(fileBytes) +
                 " bytes");
   }
   // Read straight into the image: RGB, or one grey channel copied to all three.
-  const int channels = spec.nchannels >= 3 ? 3 : 1;
-  Image image(spec.width, spec.height);
-  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, image.pixels.data(), sizeof(Color))) {
-    throw Error(shown(path, 200) + ": cannot read image: " + oneLine(in->geterror()));
+  const int channels = header.channels >= 3 ? 3 : 1;
+  Image image(header.width, header.height);
+  if (!codecRead(reader.get(), channels, &image.pixels[0].x, sizeof(Color), error)) {
+    throw Error(shown(path, 200) + ": " + oneLine(error));
   }
-  const bool decodeSrgb = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
-                          spec.format.basetype == OIIO::TypeDesc::UINT16;
+  const bool decodeSrgb = header.isInteger8or16 != 0;
   for (Color& pixel : image.pixels) {
     if (channels == 1) pixel = Color(pixel.x);
     if (decodeSrgb) pixel = Color(srgbToLinear(pixel.x), srgbToLinear(pixel.y), srgbToLinear(pixel.z));

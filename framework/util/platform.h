@@ -59,6 +59,12 @@ bool folderIsWritable(const std::string& path);
 // The longest file name (one path component) the system takes, in bytes.
 size_t maxFileNameBytes();
 
+// This process's id: names a scratch folder no other process shares.
+long currentProcessId();
+// The running program's own file, as an absolute path ("" if the system will
+// not say): finds the files built beside it.
+std::string currentExecutablePath();
+
 bool stderrIsTerminal();
 // Sends stderr to the null device until restoreStderr(token); a library's
 // chatter during a read stays off the user's screen. Process-wide: callers

@@ -6,6 +6,9 @@
 
 #include <fcntl.h>
 #include <pthread.h>
+#if defined(__APPLE__)
+#include <mach-o/dyld.h>
+#endif
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -13,6 +16,7 @@
 #include <climits>
 #include <csignal>
 #include <cstring>
+#include <vector>
 
 namespace pathlab {
 namespace {
@@ -120,6 +124,23 @@ void removeFileQuietly(const std::string& path) { ::unlink(path.c_str()); }
 bool folderIsWritable(const std::string& path) { return ::access(path.c_str(), W_OK) == 0; }
 
 size_t maxFileNameBytes() { return NAME_MAX; }
+
+long currentProcessId() { return long(::getpid()); }
+
+std::string currentExecutablePath() {
+#if defined(__APPLE__)
+  uint32_t size = 0;
+  _NSGetExecutablePath(nullptr, &size);  // asks for the size
+  std::vector<char> path(size + 1, '\0');
+  if (_NSGetExecutablePath(path.data(), &size) != 0) return "";
+  char resolved[PATH_MAX];
+  return ::realpath(path.data(), resolved) ? std::string(resolved) : std::string(path.data());
+#else
+  char self[PATH_MAX];
+  const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
+  return n > 0 ? std::string(self, size_t(n)) : std::string();
+#endif
+}
 
 bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) == 1; }
 

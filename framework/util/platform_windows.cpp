@@ -162,6 +162,25 @@ bool folderIsWritable(const std::string& path) {
 
 size_t maxFileNameBytes() { return 255; }
 
+long currentProcessId() { return long(GetCurrentProcessId()); }
+
+std::string currentExecutablePath() {
+  std::wstring path(MAX_PATH, L'\0');
+  for (;;) {
+    const DWORD n = GetModuleFileNameW(nullptr, path.data(), DWORD(path.size()));
+    if (n == 0) return "";
+    if (n < path.size()) {
+      path.resize(n);
+      break;
+    }
+    path.resize(path.size() * 2);  // truncated: try a longer buffer
+  }
+  const int bytes = WideCharToMultiByte(CP_UTF8, 0, path.data(), int(path.size()), nullptr, 0, nullptr, nullptr);
+  std::string utf8(size_t(bytes > 0 ? bytes : 0), '\0');
+  if (bytes > 0) WideCharToMultiByte(CP_UTF8, 0, path.data(), int(path.size()), utf8.data(), bytes, nullptr, nullptr);
+  return utf8;
+}
+
 bool stderrIsTerminal() { return _isatty(_fileno(stderr)) != 0; }
 
 int silenceStderr() {

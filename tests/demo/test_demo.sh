@@ -2,7 +2,7 @@
 # pathlab-demo as a lecturer runs it: --list, every demo writes its PNG in
 # under 20 s and prints numbers that agree with the theory, the -o forms,
 # bad input, and the live window under Xvfb.
-#   test_demo.sh BUILD_DIR TASK7_VARIANT
+#   test_demo.sh BUILD_DIR TASK7_VARIANT HAVE_GUI (ON: the build made the window; OFF: it has none)
 # env-importance runs task 7's code: its numbers are checked only when the
 # build links the reference (in a student release it shows the student's).
 set -uo pipefail
@@ -89,8 +89,12 @@ check_error "is not a number" pi --set samples=many
 check_error "must be between" pi --set samples=0
 check_error "give a demo name" 
 
-# The live window, when this build has one.
-if command -v xvfb-run > /dev/null && "$demo" annulus --gui --help > /dev/null 2>&1; then
+# The live window, when this build has one (CMake found GLFW and Dear ImGui);
+# a build without them says so clearly.
+if [[ $3 == OFF ]]; then
+  "$demo" annulus --gui > /dev/null 2> "$out/nogui.err" && fail "--gui succeeded in a build without a window"
+  grep -q "this build has no window" "$out/nogui.err" || fail "--gui without a window: $(cat "$out/nogui.err")"
+elif command -v xvfb-run > /dev/null; then
   # (Mesa's GL driver leaks by LeakSanitizer's count, unloaded before the report: no leak check for the window.)
   if ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -f "$out/Xauthority" -s "-screen 0 1600x1000x24" "$demo" annulus --gui --screenshot "$out/gui.png" \
       > /dev/null 2> "$out/gui.err"; then

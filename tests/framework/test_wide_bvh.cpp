@@ -120,7 +120,8 @@ std::vector<Ray> raysFor(const Scene& scene, int count) {
 }  // namespace
 
 TEST_CASE("wide BVH: the same closest hit as task 3, to the last bit, and the same blocked rays") {
-  for (auto& [name, scene] : scenes()) {
+  for (auto& [sceneName, scene] : scenes()) {
+    const std::string& name = sceneName;  // CAPTURE's lambda cannot take a structured binding before clang 16
     CAPTURE(name);
     const std::vector<Aabb> bounds = primitiveBounds(scene);
     const Bvh bvh = buildBvh(bounds);

@@ -61,6 +61,10 @@ void run() {
   expect(folder.found && folder.kind == FileKind::Folder, "a folder's kind");
   expect(folderIsWritable("platform-folder"), "a folder of ours is writable");
   expect(maxFileNameBytes() >= 255, "file names of 255 bytes");
+  expect(currentProcessId() > 0 && currentProcessId() == currentProcessId(), "a process id");
+  const std::string self = currentExecutablePath();
+  expect(self.find("test-platform") != std::string::npos && fileStatus(self).kind == FileKind::Regular,
+         "the program's own path (" + self + ")");
   e = errorOf([] { writeFileAtomically("no-such-folder/x.txt", "x"); });
   expect(contains(e, "no-such-folder/x.txt: cannot write: "), "a write into a missing folder: " + e);
 

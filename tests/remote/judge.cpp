@@ -7,7 +7,6 @@
 // test-NN-name (the build's own, as ctest runs it).
 #include <fcntl.h>
 #include <poll.h>
-#include <malloc.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -22,6 +21,11 @@
 
 #include "call.h"
 #include "protocol.h"
+#include "util/platform.h"
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 extern char** environ;
 
@@ -32,11 +36,9 @@ constexpr size_t kOutputKept = 8192;  // bytes of the candidate's output shown u
 
 std::string candidatePath() {
   if (const char* path = std::getenv("PATHLAB_CANDIDATE"); path && *path) return path;
-  char self[4096];
-  const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
-  if (n <= 0) throw CandidateError("cannot find this executable's folder: set PATHLAB_CANDIDATE");
+  const std::string exe = currentExecutablePath();
+  if (exe.empty()) throw CandidateError("cannot find this executable's folder: set PATHLAB_CANDIDATE");
   // test-NN-name's candidate is candidate-NN-name in the same folder.
-  const std::string exe(self, size_t(n));
   const size_t slash = exe.rfind('/');
   std::string name = exe.substr(slash + 1);
   if (name.rfind("test-", 0) == 0) name = name.substr(5);
@@ -44,7 +46,11 @@ std::string candidatePath() {
 }
 
 std::string signalName(int signal) {
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || __GLIBC_MINOR__ >= 32)
   const char* name = sigabbrev_np(signal);
+#else
+  const char* name = nullptr;  // macOS and older C libraries: the number and the text
+#endif
   const char* text = strsignal(signal);
   return std::string(name ? "SIG" + std::string(name) : "signal " + std::to_string(signal)) +
          (text ? std::string(", ") + text : "");
@@ -61,9 +67,12 @@ int high(int fd) {
 // Batches of megabytes are encoded, sent and decoded over and over: keep
 // freed memory in the heap instead of returning it to the kernel, or every
 // batch pays a page fault per 4 KB again (half the time of a big batch).
+// (glibc's malloc; macOS's keeps freed memory anyway.)
 void keepLargeBuffers() {
+#if defined(__GLIBC__)
   mallopt(M_MMAP_THRESHOLD, 1 << 30);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
 }
 
 class Candidate {
@@ -116,7 +125,9 @@ class Candidate {
     }
     for (int* fds : {requests, answers, output}) {
       fds[0] = high(fds[0]), fds[1] = high(fds[1]);
+#if defined(F_SETPIPE_SZ)  // Linux only
       ::fcntl(fds[0], F_SETPIPE_SZ, 1 << 20);  // batches of megabytes in few round trips
+#endif
     }
     const std::string path = candidatePath();
     posix_spawn_file_actions_t actions;

@@ -1,8 +1,10 @@
 // The candidate process: answers the judge's calls with the linked task code.
 #include "server.h"
 
+#if defined(__linux__)
 #include <malloc.h>
 #include <sys/prctl.h>
+#endif
 
 #include <csignal>
 #include <exception>
@@ -43,11 +45,14 @@ int Server::run(int requestFd, int responseFd) {
 }  // namespace pathlab::remote
 
 int main() {
-  // Outside a sandbox (ctest), a candidate whose judge died goes with it.
+#if defined(__linux__)
+  // Outside a sandbox (ctest), a candidate whose judge died goes with it
+  // (elsewhere it goes at its next read: the request pipe is closed).
   prctl(PR_SET_PDEATHSIG, SIGKILL);
   // Reuse the memory of one batch for the next (see judge.cpp).
   mallopt(M_MMAP_THRESHOLD, 1 << 30);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
+#endif
   pathlab::remote::Server server;
   pathlab::remote::registerCalls(server);
   try {
