@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numbers>
 #include <string>
 
 #include "tasks/environment.h"
@@ -48,7 +49,7 @@ Image skyWithSun(int width, int height) {
   const double T = 3.0;                       // turbidity: a clear day
   const Vec3 sun = glm::normalize(Vec3(0.6f, 0.45f, -0.45f));  // about 27 degrees above the horizon
   const double thetaS = std::acos(double(sun.y));
-  const double chi = (4.0 / 9.0 - T / 120.0) * (M_PI - 2.0 * thetaS);
+  const double chi = (4.0 / 9.0 - T / 120.0) * (std::numbers::pi - 2.0 * thetaS);
   const double zenithY = (4.0453 * T - 4.9710) * std::tan(chi) - 0.2155 * T + 2.4192;
   const double t3 = thetaS * thetaS * thetaS, t2 = thetaS * thetaS;
   const double zenithX = T * T * (0.00166 * t3 - 0.00375 * t2 + 0.00209 * thetaS) +
@@ -78,7 +79,7 @@ Image skyWithSun(int width, int height) {
         const double x = zenithX * perezX(theta, gamma) / perezX(0.0, thetaS);
         const double y = zenithYc * perezYc(theta, gamma) / perezYc(0.0, thetaS);
         c = glm::max(xyYToLinearSrgb(x, y, Y * kScale), Color(0.0f));
-        const double solidAngle = (2.0 * M_PI / width) * (M_PI / height) * std::sin(M_PI * (j + 0.5) / height);
+        const double solidAngle = (2.0 * std::numbers::pi / width) * (std::numbers::pi / height) * std::sin(std::numbers::pi * (j + 0.5) / height);
         skyIrradiance += double(luminance(c)) * double(w.y) * solidAngle;
       } else {
         c = Color(0.09f, 0.08f, 0.07f);  // brownish ground below the horizon
@@ -87,7 +88,7 @@ Image skyWithSun(int width, int height) {
     }
   // The sun: a disk of 0.6 degrees radius whose irradiance on the ground is
   // four times the whole sky's: small, and very bright.
-  const double sunSolidAngle = 2.0 * M_PI * (1.0 - sunCos);
+  const double sunSolidAngle = 2.0 * std::numbers::pi * (1.0 - sunCos);
   const double sunRadiance = 4.0 * skyIrradiance / (sunSolidAngle * double(sun.y));
   for (int j = 0; j < height; ++j)
     for (int i = 0; i < width; ++i) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace pathlab {
 namespace {
@@ -62,7 +63,7 @@ EnvironmentDistribution buildEnvironmentDistribution(const Image& map) {
   std::vector<double> rowWeight(size_t(map.height), 0.0);
   for (int j = 0; j < map.height; ++j) {
     // sin(theta) at the row's centre: rows near the poles cover less solid angle.
-    const double sinTheta = std::sin(M_PI * (j + 0.5) / map.height);
+    const double sinTheta = std::sin(std::numbers::pi * (j + 0.5) / map.height);
     float* row = &d.conditionalCdf[size_t(j) * size_t(map.width + 1)];
     double sum = 0.0;
     std::vector<double> prefix(size_t(map.width) + 1, 0.0);

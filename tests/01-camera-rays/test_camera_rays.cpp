@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "check.h"
 #include "image_scenes.h"
@@ -32,7 +33,7 @@ DVec3 expectedDirection(const Camera& camera, Point2 raster, IVec2 resolution) {
   DVec3 forward = glm::normalize(DVec3(camera.lookAt) - DVec3(camera.position));
   DVec3 right = glm::normalize(glm::cross(forward, DVec3(camera.up)));
   DVec3 up = glm::cross(right, forward);
-  double halfHeight = std::tan(double(camera.vfovDegrees) * M_PI / 360.0);
+  double halfHeight = std::tan(double(camera.vfovDegrees) * std::numbers::pi / 360.0);
   double halfWidth = halfHeight * double(resolution.x) / double(resolution.y);
   double ndcX = 2.0 * raster.x / resolution.x - 1.0, ndcY = 1.0 - 2.0 * raster.y / resolution.y;
   return glm::normalize(forward + ndcX * halfWidth * right + ndcY * halfHeight * up);

@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "check.h"
@@ -72,12 +73,12 @@ TEST_CASE("T4.1 Lambertian BRDF: f = albedo / pi, so the reflected fraction is t
           grading(2, "f = albedo / pi: without the 1/pi a surface reflects pi times the light it receives")) {
   for (Color albedo : {Color(1.0f), Color(0.5f, 0.25f, 0.0f), Color(0.0f)}) {
     Color f = candidate::lambertianBrdf(albedo);
-    CHECK(f.x == doctest::Approx(albedo.x / M_PI).epsilon(1e-6));
-    CHECK(f.y == doctest::Approx(albedo.y / M_PI).epsilon(1e-6));
-    CHECK(f.z == doctest::Approx(albedo.z / M_PI).epsilon(1e-6));
+    CHECK(f.x == doctest::Approx(albedo.x / std::numbers::pi).epsilon(1e-6));
+    CHECK(f.y == doctest::Approx(albedo.y / std::numbers::pi).epsilon(1e-6));
+    CHECK(f.z == doctest::Approx(albedo.z / std::numbers::pi).epsilon(1e-6));
   }
   // integral over the hemisphere of f cos = f * pi.
-  CHECK(double(candidate::lambertianBrdf(Color(0.7f)).x) * M_PI == doctest::Approx(0.7).epsilon(1e-6));
+  CHECK(double(candidate::lambertianBrdf(Color(0.7f)).x) * std::numbers::pi == doctest::Approx(0.7).epsilon(1e-6));
 }
 
 // ---------------------------------------------------------------- T4.2
@@ -172,7 +173,7 @@ TEST_CASE("T4.4 direct lighting: a point light gives exactly f I cos(theta) / r^
     MeanEstimate m = estimate(context, hit, wo, 4);
     const DVec3 toLight = DVec3(1.0, 2.0, -0.5) - DVec3(hit.point);
     const double r2 = glm::dot(toLight, toLight), cosTheta = toLight.y / std::sqrt(r2);
-    const double expected = 0.5 / M_PI * 3.0 * cosTheta / r2;
+    const double expected = 0.5 / std::numbers::pi * 3.0 * cosTheta / r2;
     INFO(m.describe(expected));
     CHECK(m.mean() == doctest::Approx(expected).epsilon(1e-4));
     CHECK(m.standardError() < 1e-9);  // nothing random about a point light
@@ -192,7 +193,7 @@ TEST_CASE("T4.4 direct lighting: a square area light gives Lambert's exact irrad
     Hit hit = hitFromAbove(context, target);
     MeanEstimate m = estimate(context, hit, Vec3(0, 1, 0), 40000);
     std::vector<DVec3> polygon = {{0.2, 1.5, -0.3}, {0.2, 1.5, 0.3}, {1.2, 1.5, 0.3}, {1.2, 1.5, -0.3}};
-    const double expected = 0.5 / M_PI * 4.0 * polygonIrradiance(DVec3(hit.point), DVec3(0, 1, 0), polygon);
+    const double expected = 0.5 / std::numbers::pi * 4.0 * polygonIrradiance(DVec3(hit.point), DVec3(0, 1, 0), polygon);
     INFO(m.describe(expected));
     CHECK(m.agrees(expected));
   }
@@ -221,12 +222,12 @@ TEST_CASE("T4.4 direct lighting: analytic irradiance under a coaxial disk light,
     Hit hit = hitFromAbove(context, Point3(0, 0, 0), Vec3(0.01f, 0.3f, 0.0f));
     MeanEstimate m = estimate(context, hit, Vec3(0, 1, 0), 40000);
     // The disk formula, and the exact value for the 256-gon (they differ by ~1e-4).
-    const double diskIrradiance = M_PI * 2.0 * R * R / (R * R + h * h);
+    const double diskIrradiance = std::numbers::pi * 2.0 * R * R / (R * R + h * h);
     std::vector<DVec3> polygon;
     for (int i = 0; i < kSegments; ++i) polygon.push_back(DVec3(rig.scene().meshes[1].positions[1 + i]));
     const double polygonE = 2.0 * polygonIrradiance(DVec3(hit.point), DVec3(0, 1, 0), polygon);
     CHECK(polygonE == doctest::Approx(diskIrradiance).epsilon(1e-3));
-    const double expected = 0.5 / M_PI * polygonE;
+    const double expected = 0.5 / std::numbers::pi * polygonE;
     CAPTURE(h);
     INFO(m.describe(expected));
     CHECK(m.agrees(expected));
@@ -274,15 +275,15 @@ TEST_CASE("T4.4 direct lighting: occluders cast shadows, geometry beyond the lig
   MeanEstimate lit = estimate(context, open, Vec3(0, 1, 0), 20000);
   const DVec3 toPoint = DVec3(0, 2, 0) - DVec3(open.point);
   const double r2 = glm::dot(toPoint, toPoint);
-  const double pointPart = 0.5 / M_PI * 2.0 * (toPoint.y / std::sqrt(r2)) / r2;
+  const double pointPart = 0.5 / std::numbers::pi * 2.0 * (toPoint.y / std::sqrt(r2)) / r2;
   std::vector<DVec3> polygon = {{2, 1, -0.5}, {2, 1, 0.5}, {3, 1, 0.5}, {3, 1, -0.5}};
-  const double areaPart = 0.5 / M_PI * 3.0 * polygonIrradiance(DVec3(open.point), DVec3(0, 1, 0), polygon);
+  const double areaPart = 0.5 / std::numbers::pi * 3.0 * polygonIrradiance(DVec3(open.point), DVec3(0, 1, 0), polygon);
   INFO(lit.describe(pointPart + areaPart));
   CHECK(lit.agrees(pointPart + areaPart));
   // In the occluder's shadow from the point light (not from the area light).
   Hit shadowed = hitFromAbove(context, Point3(-4.0f, 0, 0), Vec3(-0.3f, 0.4f, 0.0f));
   MeanEstimate dark = estimate(context, shadowed, Vec3(0, 1, 0), 20000);
-  const double areaOnly = 0.5 / M_PI * 3.0 * polygonIrradiance(DVec3(shadowed.point), DVec3(0, 1, 0), polygon);
+  const double areaOnly = 0.5 / std::numbers::pi * 3.0 * polygonIrradiance(DVec3(shadowed.point), DVec3(0, 1, 0), polygon);
   INFO(dark.describe(areaOnly));
   CHECK(dark.agrees(areaOnly));
 }
@@ -330,7 +331,7 @@ TEST_CASE("T4.4 direct lighting: a tiny, bright light gives the right mean and n
   Hit hit = hitFromAbove(context, Point3(0.4f, 0, -0.2f), Vec3(0.0f, 0.5f, 0.1f));
   MeanEstimate m = estimate(context, hit, Vec3(0, 1, 0), 20000);
   std::vector<DVec3> polygon = {{-5e-5, 1, -5e-5}, {-5e-5, 1, 5e-5}, {5e-5, 1, 5e-5}, {5e-5, 1, -5e-5}};
-  const double expected = 0.5 / M_PI * 1e8 * polygonIrradiance(DVec3(hit.point), DVec3(0, 1, 0), polygon);
+  const double expected = 0.5 / std::numbers::pi * 1e8 * polygonIrradiance(DVec3(hit.point), DVec3(0, 1, 0), polygon);
   INFO(m.describe(expected));
   REQUIRE(std::isfinite(m.mean()));
   CHECK(m.mean() == doctest::Approx(expected).epsilon(1e-3));
@@ -347,7 +348,7 @@ TEST_CASE("T4.4 direct lighting: -l averages several samples per area light (sam
   MeanEstimate m1 = estimate(one, hit, Vec3(0, 1, 0), 20000, 11);
   MeanEstimate m8 = estimate(eight, hit, Vec3(0, 1, 0), 20000, 12);
   std::vector<DVec3> polygon = {{-1, 1, -0.3}, {-1, 1, 0.3}, {1, 1, 0.3}, {1, 1, -0.3}};
-  const double expected = 0.5 / M_PI * 4.0 * polygonIrradiance(DVec3(hit.point), DVec3(0, 1, 0), polygon);
+  const double expected = 0.5 / std::numbers::pi * 4.0 * polygonIrradiance(DVec3(hit.point), DVec3(0, 1, 0), polygon);
   INFO("1 sample: " << m1.describe(expected));
   INFO("8 samples: " << m8.describe(expected));
   CHECK(m1.agrees(expected));

@@ -9,12 +9,14 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <numbers>
 #include <unistd.h>
 
 #include "check.h"
 #include "image_scenes.h"
 #include "image_test.h"
 #include "grading.h"
+#include "util/platform.h"
 #include "util/random.h"
 #include "calls.h"
 #include "statistics.h"
@@ -29,13 +31,13 @@ Image constantMap(int width, int height, float value = 1.0f) { return Image(widt
 // The direction of equirectangular (u, v), in double (the judge's own, so
 // T7.2 and T7.5 do not depend on the student's T7.1).
 Vec3 directionAt(Point2 uv) {
-  const double phi = 2.0 * M_PI * uv.x, theta = M_PI * uv.y;
+  const double phi = 2.0 * std::numbers::pi * uv.x, theta = std::numbers::pi * uv.y;
   return Vec3(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)), float(std::sin(theta) * std::sin(phi)));
 }
 Point2 uvOf(const Vec3& w) {
   double phi = std::atan2(double(w.z), double(w.x));
-  if (phi < 0.0) phi += 2.0 * M_PI;
-  return Point2(float(phi / (2.0 * M_PI)), float(std::acos(std::clamp(double(w.y), -1.0, 1.0)) / M_PI));
+  if (phi < 0.0) phi += 2.0 * std::numbers::pi;
+  return Point2(float(phi / (2.0 * std::numbers::pi)), float(std::acos(std::clamp(double(w.y), -1.0, 1.0)) / std::numbers::pi));
 }
 
 std::vector<Vec2> uniformPoints(int n, uint64_t seed) {
@@ -74,10 +76,10 @@ double pdfIntegral(const EnvironmentDistribution& d) {
   std::vector<double> weights;
   for (int j = 0; j < kTheta; ++j)
     for (int i = 0; i < kPhi; ++i) {
-      const double theta = M_PI * (j + 0.5) / kTheta, phi = 2 * M_PI * (i + 0.5) / kPhi;
+      const double theta = std::numbers::pi * (j + 0.5) / kTheta, phi = 2 * std::numbers::pi * (i + 0.5) / kPhi;
       directions.emplace_back(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
                               float(std::sin(theta) * std::sin(phi)));
-      weights.push_back(std::sin(theta) * (M_PI / kTheta) * (2 * M_PI / kPhi));
+      weights.push_back(std::sin(theta) * (std::numbers::pi / kTheta) * (2 * std::numbers::pi / kPhi));
     }
   const std::vector<float> pdfs = candidate::environmentPdf(d, directions);
   double sum = 0.0;
@@ -140,7 +142,7 @@ TEST_CASE("T7.3 uniform sphere: directions cover the sphere evenly (chi-square, 
   DirectionHistogram histogram;
   for (const Vec3& w : candidate::sampleUniformSphere(uniformPoints(kSamples, 72))) histogram.add(w);
   CHECK(histogram.outside == 0);
-  auto pdf = [](const std::vector<Vec3>& ws) { return std::vector<double>(ws.size(), 1.0 / (4.0 * M_PI)); };
+  auto pdf = [](const std::vector<Vec3>& ws) { return std::vector<double>(ws.size(), 1.0 / (4.0 * std::numbers::pi)); };
   ChiSquareResult r = chiSquareOfDirections("T7.3-uniform-sphere", histogram, DirectionHistogram::expected(pdf, kSamples), 1e-4);
   INFO("chi-square " << r.statistic << ", dof " << r.degreesOfFreedom << ", p = " << r.pValue << " " << r.failure
                      << "\n" << r.pictures);
@@ -210,8 +212,8 @@ TEST_CASE("T7.5 importance sampling: a single hot pixel — every sample lands i
   map.at(21, 5) = Color(100.0f);
   const EnvironmentDistribution d = candidate::buildEnvironmentDistribution(map);
   // The pixel's solid angle times its radiance is the exact total.
-  const double theta0 = M_PI * 5 / 16, theta1 = M_PI * 6 / 16;
-  const double pixelSolidAngle = (2 * M_PI / 32) * (std::cos(theta0) - std::cos(theta1));
+  const double theta0 = std::numbers::pi * 5 / 16, theta1 = std::numbers::pi * 6 / 16;
+  const double pixelSolidAngle = (2 * std::numbers::pi / 32) * (std::cos(theta0) - std::cos(theta1));
   double lo = 1e30, hi = 0.0;
   MeanEstimate weight;
   int outside = 0, inconsistent = 0;
@@ -304,8 +306,9 @@ Image testMap(bool withSun) {
 
 // The map through the scene loader, as a user's file would come.
 Environment loadedEnvironment(bool withSun) {
-  const std::string path = std::filesystem::temp_directory_path() / ("pathlab-test-map-" +
-                           std::to_string(::getpid()) + (withSun ? "-sun.exr" : ".exr"));
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("pathlab-test-map-" + std::to_string(currentProcessId()) + (withSun ? "-sun.exr" : ".exr")))
+                               .string();
   writeImage(testMap(withSun), path);
   Scene loaded = sceneFromJson(R"({ "environment": { "image": ")" + path + R"(" } })", "map");
   std::filesystem::remove(path);

@@ -2,7 +2,12 @@
 // leniencies the course's viewer has. Linked with the reference tasks.
 #include <doctest/doctest.h>
 
+
+#if defined(_WIN32)
+#include <io.h>
+#else
 #include <unistd.h>
+#endif
 
 #include <cstdio>
 #include <cstring>
@@ -74,14 +79,26 @@ TEST_CASE("scene: the course's COLLADA Cornell boxes load with their materials, 
 
 // What the code in its scope writes to stderr (file descriptor 2, so also
 // what C stdio and std::cerr write), captured in a temporary file.
+#if defined(_WIN32)
+int duplicate(int fd) { return _dup(fd); }
+void duplicateOnto(int from, int to) { _dup2(from, to); }
+void closeDescriptor(int fd) { _close(fd); }
+int descriptorOf(std::FILE* file) { return _fileno(file); }
+#else
+int duplicate(int fd) { return ::dup(fd); }
+void duplicateOnto(int from, int to) { ::dup2(from, to); }
+void closeDescriptor(int fd) { ::close(fd); }
+int descriptorOf(std::FILE* file) { return ::fileno(file); }
+#endif
+
 class StderrCapture {
  public:
   StderrCapture() {
     std::fflush(stderr);
     file_ = std::tmpfile();
     REQUIRE(file_ != nullptr);
-    saved_ = dup(2);
-    dup2(fileno(file_), 2);
+    saved_ = duplicate(2);
+    duplicateOnto(descriptorOf(file_), 2);
   }
   ~StderrCapture() {
     restore();
@@ -101,8 +118,8 @@ class StderrCapture {
   void restore() {
     if (saved_ < 0) return;
     std::fflush(stderr);
-    dup2(saved_, 2);
-    close(saved_);
+    duplicateOnto(saved_, 2);
+    closeDescriptor(saved_);
     saved_ = -1;
   }
   std::FILE* file_ = nullptr;

@@ -3,7 +3,6 @@
 // numbers and strategies: test_render.cpp). Linked with the reference tasks.
 #include <doctest/doctest.h>
 
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstring>

@@ -3,7 +3,6 @@
 // with the reference tasks.
 #include <doctest/doctest.h>
 
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstring>

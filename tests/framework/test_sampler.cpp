@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "util/random.h"
@@ -74,7 +75,7 @@ TEST_CASE("sampler: Sobol numbers lie in [0, 1) and differ between pixels, dimen
 // low-discrepancy sequence is for.
 TEST_CASE("sampler: Sobol estimates are unbiased, with a fraction of independent sampling's variance") {
   // f(u, v) = u v + cos(2 pi u) + v^2 over [0,1)^2: 1/4 + 0 + 1/3.
-  const auto f = [](Vec2 u) { return double(u.x) * u.y + std::cos(2.0 * M_PI * u.x) + double(u.y) * u.y; };
+  const auto f = [](Vec2 u) { return double(u.x) * u.y + std::cos(2.0 * std::numbers::pi * u.x) + double(u.y) * u.y; };
   const double exact = 0.25 + 1.0 / 3.0;
   auto spread = [&](SampleSequence sequence, double* mean) {
     constexpr int kPixels = 4096, kSamples = 64;
@@ -147,7 +148,7 @@ TEST_CASE("sampler: stratified samples put one sample in each cell, dimension by
 
 // As for Sobol above: |z| < 5 fails a correct sampler with probability 6e-7.
 TEST_CASE("sampler: stratified estimates are unbiased, with less variance than independent samples") {
-  const auto f = [](Vec2 u) { return double(u.x) * u.y + std::cos(2.0 * M_PI * u.x) + double(u.y) * u.y; };
+  const auto f = [](Vec2 u) { return double(u.x) * u.y + std::cos(2.0 * std::numbers::pi * u.x) + double(u.y) * u.y; };
   const double exact = 0.25 + 1.0 / 3.0;
   constexpr int kPixels = 4096;
   constexpr uint32_t kSamples = 64;

@@ -4,30 +4,22 @@
 //
 // The candidate is $PATHLAB_CANDIDATE (the grader points it at a launcher
 // that runs the candidate in a sandbox), else candidate-NN-name beside this
-// test-NN-name (the build's own, as ctest runs it).
-#include <fcntl.h>
-#include <poll.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
+// test-NN-name (the build's own, as ctest runs it). Starting, watching and
+// ending the process is candidate_process.h's, one half per system.
 #include <atomic>
-#include <cerrno>
-#include <csignal>
-#include <cstring>
+#include <cstdlib>
 #include <mutex>
 #include <string>
 #include <thread>
 
 #include "call.h"
+#include "candidate_process.h"
 #include "protocol.h"
 #include "util/platform.h"
 
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
-
-extern char** environ;
 
 namespace pathlab::remote {
 namespace {
@@ -39,29 +31,11 @@ std::string candidatePath() {
   const std::string exe = currentExecutablePath();
   if (exe.empty()) throw CandidateError("cannot find this executable's folder: set PATHLAB_CANDIDATE");
   // test-NN-name's candidate is candidate-NN-name in the same folder.
-  const size_t slash = exe.rfind('/');
+  // (Windows: backslashes, and both end in .exe.)
+  const size_t slash = exe.find_last_of("/\\");
   std::string name = exe.substr(slash + 1);
   if (name.rfind("test-", 0) == 0) name = name.substr(5);
-  return exe.substr(0, slash) + "/candidate-" + name;
-}
-
-std::string signalName(int signal) {
-#if defined(__GLIBC__) && (__GLIBC__ > 2 || __GLIBC_MINOR__ >= 32)
-  const char* name = sigabbrev_np(signal);
-#else
-  const char* name = nullptr;  // macOS and older C libraries: the number and the text
-#endif
-  const char* text = strsignal(signal);
-  return std::string(name ? "SIG" + std::string(name) : "signal " + std::to_string(signal)) +
-         (text ? std::string(", ") + text : "");
-}
-
-// A descriptor number >= 10, close-on-exec, so the child's 0-4 never collide with it.
-int high(int fd) {
-  const int moved = ::fcntl(fd, F_DUPFD_CLOEXEC, 10);
-  ::close(fd);
-  if (moved < 0) throw CandidateError(std::string("fcntl failed: ") + std::strerror(errno));
-  return moved;
+  return exe.substr(0, slash + 1) + "candidate-" + name;
 }
 
 // Batches of megabytes are encoded, sent and decoded over and over: keep
@@ -80,7 +54,7 @@ class Candidate {
   ~Candidate() { stop(); }
 
   std::string exchange(uint32_t id, const char* name, const std::string& request) {
-    if (pid_ < 0) start();
+    if (!process_.running()) start();
     uint32_t status = 0;
     std::string answer;
     bool answered = false;
@@ -117,42 +91,11 @@ class Candidate {
 
  private:
   void start() {
-    std::signal(SIGPIPE, SIG_IGN);  // a dead candidate is an error on write, not a signal
     keepLargeBuffers();
-    int requests[2], answers[2], output[2];
-    if (::pipe(requests) != 0 || ::pipe(answers) != 0 || ::pipe(output) != 0) {
-      throw CandidateError(std::string("pipe failed: ") + std::strerror(errno));
-    }
-    for (int* fds : {requests, answers, output}) {
-      fds[0] = high(fds[0]), fds[1] = high(fds[1]);
-#if defined(F_SETPIPE_SZ)  // Linux only
-      ::fcntl(fds[0], F_SETPIPE_SZ, 1 << 20);  // batches of megabytes in few round trips
-#endif
-    }
-    const std::string path = candidatePath();
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_adddup2(&actions, output[1], 1);
-    posix_spawn_file_actions_adddup2(&actions, output[1], 2);
-    posix_spawn_file_actions_adddup2(&actions, requests[0], kRequestFd);
-    posix_spawn_file_actions_adddup2(&actions, answers[1], kResponseFd);
-    char* argv[] = {const_cast<char*>(path.c_str()), nullptr};
-    const int error = posix_spawn(&pid_, path.c_str(), &actions, nullptr, argv, environ);
-    posix_spawn_file_actions_destroy(&actions);
-    ::close(requests[0]);
-    ::close(answers[1]);
-    ::close(output[1]);
-    if (error != 0) {
-      pid_ = -1;
-      ::close(requests[1]);
-      ::close(answers[0]);
-      ::close(output[0]);
-      throw CandidateError("cannot start the candidate " + path + ": " + std::strerror(error));
-    }
-    toCandidate_ = requests[1];
-    fromCandidate_ = answers[0];
-    drain_ = std::thread([this, fd = output[0]] { drainOutput(fd); });
+    const CandidatePipes pipes = process_.start(candidatePath());
+    toCandidate_ = pipes.toCandidate;
+    fromCandidate_ = pipes.fromCandidate;
+    drain_ = std::thread([this, fd = pipes.output] { drainOutput(fd); });
   }
 
   // Keeps what the candidate prints. A process it left behind may hold the
@@ -160,22 +103,20 @@ class Candidate {
   void drainOutput(int fd) {
     char buffer[4096];
     for (;;) {
-      pollfd p{fd, POLLIN, 0};
-      const int ready = ::poll(&p, 1, 50);
-      if (ready < 0 && errno == EINTR) continue;
-      if (ready <= 0) {
+      const int ready = CandidateProcess::waitReadable(fd, 50);
+      if (ready < 0) break;
+      if (ready == 0) {
         if (candidateGone_) break;
         continue;
       }
-      const ssize_t n = ::read(fd, buffer, sizeof buffer);
-      if (n < 0 && errno == EINTR) continue;
+      const long n = readSome(fd, buffer, sizeof buffer);
       if (n <= 0) break;
       std::lock_guard<std::mutex> lock(outputMutex_);
       const size_t keep = std::min(size_t(n), kOutputKept - std::min(kOutputKept, output_.size()));
       output_.append(buffer, keep);
       dropped_ += size_t(n) - keep;
     }
-    ::close(fd);
+    closeDescriptor(fd);
   }
 
   void joinDrain() {
@@ -186,45 +127,25 @@ class Candidate {
 
   // Reaps a candidate that stopped answering; describes how it ended.
   std::string died(const char* name) {
-    ::close(toCandidate_);
-    ::close(fromCandidate_);
-    toCandidate_ = fromCandidate_ = -1;
-    int status = 0;
+    closePipes();
     // Let a crashing candidate (or the sandbox reporting its crash) finish
     // exiting before the kill, so its own end is the one reported.
-    pid_t done = 0;
-    for (int i = 0; i < 100 && (done = ::waitpid(pid_, &status, WNOHANG)) == 0; ++i) ::usleep(10000);
-    if (done == 0) {
-      ::kill(pid_, SIGKILL);  // still alive with its pipes closed
-      while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-      }
-    }
-    pid_ = -1;
+    const std::string how = process_.reap(1000);
     joinDrain();
-    std::string how;
-    if (WIFSIGNALED(status) && WTERMSIG(status) != SIGKILL) {
-      how = "the task's code crashed (" + signalName(WTERMSIG(status)) + ")";
-    } else if (WIFEXITED(status) && WEXITSTATUS(status) > 128 && WEXITSTATUS(status) < 128 + 32) {
-      // The sandbox reports its child's death by signal k as exit code 128 + k.
-      how = "the task's code crashed (" + signalName(WEXITSTATUS(status) - 128) + ")";
-    } else if (WIFEXITED(status)) {
-      how = "the candidate exited (exit code " + std::to_string(WEXITSTATUS(status)) + ")";
-    } else {
-      how = "the candidate stopped";
-    }
     return how + " while computing " + name;
   }
 
   void stop() {
-    if (pid_ < 0) return;
-    ::close(toCandidate_);  // end of requests: a well-behaved candidate exits
-    ::close(fromCandidate_);
-    ::kill(pid_, SIGKILL);  // one stuck in the task's code does not
-    int status = 0;
-    while (::waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-    }
-    pid_ = -1;
+    if (!process_.running()) return;
+    closePipes();     // end of requests: a well-behaved candidate exits
+    process_.kill();  // one stuck in the task's code does not
     joinDrain();
+  }
+
+  void closePipes() {
+    closeDescriptor(toCandidate_);
+    closeDescriptor(fromCandidate_);
+    toCandidate_ = fromCandidate_ = -1;
   }
 
   static std::string printable(const std::string& text) {
@@ -234,7 +155,7 @@ class Candidate {
     return out;
   }
 
-  pid_t pid_ = -1;
+  CandidateProcess process_;
   int toCandidate_ = -1, fromCandidate_ = -1;
   std::thread drain_;
   std::atomic<bool> candidateGone_{false};

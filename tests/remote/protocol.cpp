@@ -1,18 +1,59 @@
 #include "protocol.h"
 
+#if defined(_WIN32)
+#include <io.h>
+#else
 #include <unistd.h>
+#endif
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
 
 namespace pathlab::remote {
+namespace {
+
+// One read or write of at most 1 GB (Windows' C runtime counts in unsigned int).
+long rawRead(int fd, void* data, size_t size) {
+#if defined(_WIN32)
+  return _read(fd, data, unsigned(std::min(size, size_t(1) << 30)));
+#else
+  return long(::read(fd, data, std::min(size, size_t(1) << 30)));
+#endif
+}
+long rawWrite(int fd, const void* data, size_t size) {
+#if defined(_WIN32)
+  return _write(fd, data, unsigned(std::min(size, size_t(1) << 30)));
+#else
+  return long(::write(fd, data, std::min(size, size_t(1) << 30)));
+#endif
+}
+
+}  // namespace
+
+long readSome(int fd, void* data, size_t size) {
+  for (;;) {
+    const long n = rawRead(fd, data, size);
+    if (n < 0 && errno == EINTR) continue;
+    return n;
+  }
+}
+
+void closeDescriptor(int fd) {
+  if (fd < 0) return;
+#if defined(_WIN32)
+  _close(fd);
+#else
+  ::close(fd);
+#endif
+}
 
 bool readAll(int fd, void* data, size_t size) {
   char* at = static_cast<char*>(data);
   size_t done = 0;
   while (done < size) {
-    ssize_t n = ::read(fd, at + done, size - done);
+    const long n = rawRead(fd, at + done, size - done);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) throw std::runtime_error(std::string("read failed: ") + std::strerror(errno));
     if (n == 0) {
@@ -28,7 +69,7 @@ void writeAll(int fd, const void* data, size_t size) {
   const char* at = static_cast<const char*>(data);
   size_t done = 0;
   while (done < size) {
-    ssize_t n = ::write(fd, at + done, size - done);
+    const long n = rawWrite(fd, at + done, size - done);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) throw std::runtime_error(std::string("write failed: ") + std::strerror(errno));
     done += size_t(n);

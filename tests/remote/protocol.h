@@ -4,8 +4,9 @@
 // process built from the student's task file, the framework and the
 // reference for the other tasks; it only computes. The judge writes a
 // request on the candidate's file descriptor 3 and reads the answer on its
-// descriptor 4; the candidate's stdout and stderr are only shown, never
-// parsed.
+// descriptor 4 (on Windows, pipes the candidate inherits:
+// candidate_process.h); the candidate's stdout and stderr are only shown,
+// never parsed.
 //
 //   request:  Header{kRequestMagic, call id, payload size}  payload
 //   response: Header{kResponseMagic, status, payload size}  payload
@@ -45,6 +46,11 @@ static_assert(sizeof(Header) == 16);
 // std::runtime_error on errors and on a stream that ends mid-message.
 bool readAll(int fd, void* data, size_t size);
 void writeAll(int fd, const void* data, size_t size);
+
+// One read of up to `size` bytes, retrying on EINTR: the count, 0 at end
+// of file, -1 on an error.
+long readSome(int fd, void* data, size_t size);
+void closeDescriptor(int fd);  // ignores -1
 
 // One framed message: header then payload. readMessage returns false at a
 // clean end of file and throws on a bad magic or an oversized payload.

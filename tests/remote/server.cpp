@@ -1,15 +1,15 @@
 // The candidate process: answers the judge's calls with the linked task code.
 #include "server.h"
 
-#if defined(__linux__)
-#include <malloc.h>
-#include <sys/prctl.h>
-#endif
-
-#include <csignal>
+#include <cstdio>
 #include <exception>
 
+#include "candidate_process.h"
 #include "protocol.h"
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace pathlab::remote {
 
@@ -45,10 +45,8 @@ int Server::run(int requestFd, int responseFd) {
 }  // namespace pathlab::remote
 
 int main() {
-#if defined(__linux__)
-  // Outside a sandbox (ctest), a candidate whose judge died goes with it
-  // (elsewhere it goes at its next read: the request pipe is closed).
-  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  pathlab::remote::candidateDiesWithJudge();
+#if defined(__GLIBC__)
   // Reuse the memory of one batch for the next (see judge.cpp).
   mallopt(M_MMAP_THRESHOLD, 1 << 30);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
@@ -56,7 +54,12 @@ int main() {
   pathlab::remote::Server server;
   pathlab::remote::registerCalls(server);
   try {
-    return server.run(pathlab::remote::kRequestFd, pathlab::remote::kResponseFd);
+    const int requests = pathlab::remote::candidateRequestFd(), answers = pathlab::remote::candidateResponseFd();
+    if (requests < 0 || answers < 0) {
+      std::fprintf(stderr, "a candidate answers a test suite's calls: run the suite (test-NN-name), not this program\n");
+      return 2;
+    }
+    return server.run(requests, answers);
   } catch (const std::exception&) {
     return 3;  // the judge went away mid-message
   }

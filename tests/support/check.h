@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 #include <random>
 #include <sstream>
 #include <string>
@@ -53,7 +54,7 @@ class Random {
   }
   double uniform(double a = 0.0, double b = 1.0) { return std::uniform_real_distribution<double>(a, b)(engine_); }
   DVec3 unitVector() {
-    double z = uniform(-1.0, 1.0), phi = uniform(0.0, 2.0 * M_PI), r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    double z = uniform(-1.0, 1.0), phi = uniform(0.0, 2.0 * std::numbers::pi), r = std::sqrt(std::max(0.0, 1.0 - z * z));
     return {r * std::cos(phi), r * std::sin(phi), z};
   }
   DVec3 inCube(double half) { return {uniform(-half, half), uniform(-half, half), uniform(-half, half)}; }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numbers>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -144,7 +145,7 @@ struct DirectionHistogram {
       return;
     }
     const double phi = std::atan2(double(w.y), double(w.x));
-    const int i = std::clamp(int((phi + M_PI) / (2.0 * M_PI) * kPhi), 0, kPhi - 1);
+    const int i = std::clamp(int((phi + std::numbers::pi) / (2.0 * std::numbers::pi) * kPhi), 0, kPhi - 1);
     const int j = std::clamp(int((double(w.z) + 1.0) * 0.5 * kCos), 0, kCos - 1);
     counts[size_t(j * kPhi + i)] += 1.0;
   }
@@ -155,7 +156,7 @@ struct DirectionHistogram {
 
   // kSub = 32 for piecewise-constant pdfs (environment maps), as Mitsuba does.
   static std::vector<double> expected(const PdfBatch& pdfs, double samples, int kSub = 8) {
-    const double dPhi = 2.0 * M_PI / kPhi, dCos = 2.0 / kCos;
+    const double dPhi = 2.0 * std::numbers::pi / kPhi, dCos = 2.0 / kCos;
     // Every midpoint of every cell's sub-grid, cell by cell, and its sin(theta).
     std::vector<Vec3> directions;
     std::vector<double> sines, dThetas;
@@ -169,7 +170,7 @@ struct DirectionHistogram {
       for (int i = 0; i < kPhi; ++i)
         for (int sj = 0; sj < kSub; ++sj)
           for (int si = 0; si < kSub; ++si) {
-            const double phi = -M_PI + (i + (si + 0.5) / kSub) * dPhi;
+            const double phi = -std::numbers::pi + (i + (si + 0.5) / kSub) * dPhi;
             const double theta = theta0 + (sj + 0.5) * dTheta;
             const double r = std::sin(theta);
             directions.emplace_back(float(r * std::cos(phi)), float(r * std::sin(phi)), float(std::cos(theta)));
