@@ -16,6 +16,7 @@ struct TodoReached {
   int line = 0;
 };
 
+// `file` as __FILE__ gives it; kept relative to the repository.
 void reportTodo(const char* tag, const char* file, int line);
 std::vector<TodoReached> todosReached();
 

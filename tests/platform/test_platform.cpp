@@ -13,6 +13,7 @@
 #include "util/input_file.h"
 #include "util/parallel.h"
 #include "util/platform.h"
+#include "util/todo.h"
 
 using namespace pathlab;
 
@@ -62,6 +63,13 @@ void run() {
   expect(folderIsWritable("platform-folder"), "a folder of ours is writable");
   expect(maxFileNameBytes() >= 255, "file names of 255 bytes");
   expect(currentProcessId() > 0 && currentProcessId() == currentProcessId(), "a process id");
+  // MSVC's __FILE__ is absolute, with backslashes: a TODO still names the repository's file.
+  reportTodo("T1.1", "C:\\Users\\me\\tasks\\pathlab\\tasks\\01-camera-rays\\camera_rays.cpp", 7);
+  expect(todosReached().back().file == "tasks/01-camera-rays/camera_rays.cpp", "a TODO's file from an absolute __FILE__");
+  reportTodo("T1.2", "D:\\tasks\\pathlab\\solutions\\01-camera-rays\\camera_rays.cpp", 8);
+  expect(todosReached().back().file == "solutions/01-camera-rays/camera_rays.cpp", "the last task folder in the path");
+  reportTodo("T2.1", "tasks/02-intersection/intersection.cpp", 9);
+  expect(todosReached().back().file == "tasks/02-intersection/intersection.cpp", "a TODO's file from a relative __FILE__");
   const std::string self = currentExecutablePath();
   expect(self.find("test-platform") != std::string::npos && fileStatus(self).kind == FileKind::Regular,
          "the program's own path (" + self + ")");
