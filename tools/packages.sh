@@ -5,9 +5,10 @@
 
 # What the grader builds the suites with (Gradescope installs only these).
 pathlab_core=(build-essential cmake ninja-build pkg-config python3 libglm-dev libopenimageio-dev
-              doctest-dev nlohmann-json3-dev libcli11-dev libpugixml-dev libfast-float-dev)
-# The whole project: the core, Embree for the benchmark, GLFW and Dear ImGui for the GUI, plots.
-pathlab_build=("${pathlab_core[@]}" git libembree-dev libglfw3-dev libimgui-dev python3-matplotlib)
+              doctest-dev nlohmann-json3-dev libcli11-dev libpugixml-dev)
+# The whole project: the core, Embree for the benchmark, GLFW and Dear ImGui for the GUI, plots,
+# fast_float (the OBJ reader's numbers: optional with GCC, needed with libc++; Ubuntu 22.04 lacks it).
+pathlab_build=("${pathlab_core[@]}" git libembree-dev libglfw3-dev libimgui-dev python3-matplotlib libfast-float-dev)
 # The tests: the GUI on a virtual display (Xvfb, Mesa's software OpenGL) looked
 # at with ImageMagick, and the grader's sandbox (bubblewrap).
 pathlab_test=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick bubblewrap)
@@ -20,8 +21,9 @@ pathlab_libcxx=(clang libc++-14-dev libc++abi-14-dev)
 # The aarch64 check (tools/aarch64-check): the cross compiler, qemu run through
 # binfmt_misc, and mmdebstrap to make an arm64 root with the libraries below.
 pathlab_aarch64=(cmake ninja-build pkg-config python3 g++-aarch64-linux-gnu qemu-user-static binfmt-support mmdebstrap)
+# (No fast_float: there the OBJ reader's std::from_chars path is the one tested.)
 pathlab_aarch64_root=(libc6-dev libstdc++-12-dev libglm-dev libopenimageio-dev doctest-dev nlohmann-json3-dev
-                      libcli11-dev libpugixml-dev libfast-float-dev)
+                      libcli11-dev libpugixml-dev)
 # Plots (make-report, the demos' figures).
 pathlab_plots=(python3-matplotlib)
 

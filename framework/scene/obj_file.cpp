@@ -12,7 +12,15 @@
 #include <unordered_map>
 #include <vector>
 
+// Numbers are read with std::from_chars: exact, locale-free, the whole
+// token or nothing. libc++ has no floating-point from_chars before LLVM 20
+// (macOS): there fast_float, the algorithm libstdc++'s uses, stands in.
+#if defined(PATHLAB_HAVE_FAST_FLOAT)
 #include <fast_float/fast_float.h>
+namespace chars = fast_float;
+#else
+namespace chars = std;
+#endif
 
 #include "util/error.h"
 #include "util/input_file.h"
@@ -82,10 +90,8 @@ class ObjParser {
     for (int k = 0; k < 3; ++k) {
       std::string_view t = token(rest);
       if (t.empty()) fail(std::string("expected 3 numbers for a ") + what);
-      // fast_float is std::from_chars for floats, which libc++ (macOS)
-      // lacks before LLVM 20: exact, locale-free, the whole token or nothing.
       float value = 0.0f;
-      auto [end, error] = fast_float::from_chars(t.data(), t.data() + t.size(), value);
+      auto [end, error] = chars::from_chars(t.data(), t.data() + t.size(), value);
       if (error != std::errc() || end != t.data() + t.size() || !std::isfinite(value)) {
         fail(std::string(what) + " component " + inQuotes(t, 40) + " is not a finite number");
       }

@@ -112,7 +112,7 @@ def main():
             "a command changed": (workflow.replace("cmake --build --preset student", "cmake --build build"), setup),
             "a package dropped from brew": (workflow.replace(" fast_float glfw\n", " glfw\n"), setup),
             "a package dropped from MSYS2": (workflow.replace(" mingw-w64-ucrt-x86_64-glfw\n", "\n"), setup),
-            "a package added to apt": (workflow.replace("libfast-float-dev\n", "libfast-float-dev libfoo\n"), setup),
+            "a package added to apt": (workflow.replace("libpugixml-dev\n", "libpugixml-dev libfoo\n"), setup),
             "the docs' command changed": (workflow, setup.replace("brew install cmake", "brew install cmake gcc")),
             "windows dropped from the matrix": (workflow.replace(", windows-latest]", "]"), setup),
             "a preset that does not exist": (workflow.replace("ctest --preset student", "ctest --preset students"),
