@@ -6,6 +6,7 @@
 //   CTest candidate-process runs the POSIX half; tools/windows-check runs the
 //   Windows half under Wine.
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -45,7 +46,9 @@ int runCandidate() {
   std::string payload;
   while (remote::readMessage(requests, remote::kRequestMagic, id, payload)) {
     if (id == 2) {
-      int* volatile nowhere = nullptr;  // volatile: a real store, not a compiler's trap
+      // A store to an address no system maps (not null: UBSan would stop at
+      // that first); volatile, so the store is real, not a compiler's trap.
+      int* volatile nowhere = reinterpret_cast<int*>(std::uintptr_t(64));
       *nowhere = 1;
     }
     if (id == 3) std::exit(7);
@@ -72,6 +75,10 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 int main() {
   if (std::getenv("PATHLAB_TEST_CANDIDATE")) return runCandidate();
   setEnvironment("PATHLAB_TEST_CANDIDATE", "1");
+  // Under AddressSanitizer (the asan preset) the candidate's crash must stay
+  // a crash: its SEGV handler would report and exit with code 1.
+  const char* asan = std::getenv("ASAN_OPTIONS");
+  setEnvironment("ASAN_OPTIONS", std::string(asan ? asan : "") + ":handle_segv=0");
   setEnvironment("PATHLAB_CANDIDATE", pathlab::currentExecutablePath());
 
   expect(remote::exchange(1, "answer", "ping") == "ping back", "a call answered");
