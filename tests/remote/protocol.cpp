@@ -53,8 +53,7 @@ bool readAll(int fd, void* data, size_t size) {
   char* at = static_cast<char*>(data);
   size_t done = 0;
   while (done < size) {
-    const long n = rawRead(fd, at + done, size - done);
-    if (n < 0 && errno == EINTR) continue;
+    const long n = readSome(fd, at + done, size - done);
     if (n < 0) throw std::runtime_error(std::string("read failed: ") + std::strerror(errno));
     if (n == 0) {
       if (done == 0) return false;
