@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "check.h"
 #include "image_scenes.h"
@@ -158,6 +159,62 @@ TEST_CASE("T1.2 camera basis: up parallel to the view direction still gives a fi
     checkOrthonormal(b);
     CHECK(near(b.forward, glm::normalize(camera.lookAt - camera.position), 1e-5f));
     Ray ray = candidate::generateCameraRay(camera, b, Point2(0.0f), IVec2(64, 48));
+    CHECK(finite(ray.direction));
+  }
+}
+
+TEST_CASE("T1.2 camera basis: the fallback works along every axis, near every axis, and when the cross product "
+          "underflows" *
+          grading(2, "when cross(forward, up) is tiny, cross forward with a vector that is never parallel to it "
+                     "(the world axis least aligned with forward, or Duff et al.'s basis); test the length of the "
+                     "cross product against a small threshold, not against exactly 0: a cross product of "
+                     "1e-25 is not 0, but its squared length is, and normalize() of it is NaN")) {
+  // Any perpendicular is right when up is parallel to the view (the roll is
+  // then free): check only that the frame is finite, orthonormal,
+  // right-handed and looks at lookAt.
+  std::vector<Vec3> forwards;
+  for (int axis = 0; axis < 3; ++axis)
+    for (float sign : {1.0f, -1.0f}) {
+      Vec3 f(0.0f);
+      f[axis] = sign;
+      forwards.push_back(f);
+      // Slightly off the axis, towards the other two in either order: so
+      // close (1e-30) that a fallback vector parallel to the axis gives a
+      // cross product whose squared length underflows.
+      for (float off : {1e-3f, 1e-30f})
+        for (int order = 0; order < 2; ++order) {
+          Vec3 near = f;
+          near[(axis + 1 + order) % 3] = off;
+          near[(axis + 2 - order) % 3] = -2.0f * off;
+          forwards.push_back(near);
+        }
+    }
+  Random random(11);
+  for (int i = 0; i < 40; ++i) forwards.push_back(Vec3(random.unitVector()));
+  for (Vec3 forward : forwards) {
+    for (float scale : {1.0f, -3.0f, 1e-3f}) {  // up = forward, up = -forward, at other lengths
+      // At the origin, so lookAt - position keeps the 1e-30 components.
+      Camera camera = makeCamera({0, 0, 0}, 2.0f * forward, forward * scale, 50);
+      CAPTURE(str(forward));
+      CAPTURE(scale);
+      CameraBasis b = candidate::cameraBasis(camera);
+      checkOrthonormal(b);
+      CHECK(near(b.forward, glm::normalize(camera.lookAt - camera.position), 1e-5f));
+    }
+  }
+  // Parallel but for a component of 1e-25: cross(forward, up) is about 1e-25
+  // long, and its squared length underflows to 0.
+  for (int axis = 0; axis < 3; ++axis) {
+    Vec3 forward(0.0f), up(0.0f);
+    forward[axis] = -1.0f;
+    up[axis] = -1.0f;
+    up[(axis + 1) % 3] = 1e-25f;
+    Camera camera = makeCamera({0, 0, 0}, forward, up, 45);
+    CAPTURE(axis);
+    CameraBasis b = candidate::cameraBasis(camera);
+    checkOrthonormal(b);
+    CHECK(near(b.forward, forward, 1e-6f));
+    Ray ray = candidate::generateCameraRay(camera, b, Point2(3.0f, 5.0f), IVec2(64, 48));
     CHECK(finite(ray.direction));
   }
 }

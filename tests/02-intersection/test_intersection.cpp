@@ -117,6 +117,87 @@ TEST_CASE("T2.1 triangle: rays beside the edges, behind the origin or outside th
   CHECK_FALSE(candidate::intersectTriangle(Ray{{0.2f, 0.2f, -1}, {0, 0, 1}}, {0.0f, 0.5f}, p0, p1, p2).has_value());
 }
 
+TEST_CASE("T2.1 triangle: the range is open — t exactly at range.min or range.max misses, from either side" *
+          grading(2, "accept only range.min < t < range.max: a hit exactly at either end is outside. When det < 0, "
+                     "multiplying the range by det flips every comparison: write that case with each inequality "
+                     "reversed, strict where the positive case is strict")) {
+  // t = 2 exactly, in float and double, whatever the method: integer
+  // vertices, an axis-aligned ray, a power-of-two determinant.
+  const Point3 p0{-1, -1, -2}, p1{1, -1, -2}, p2{-1, 1, -2};
+  const float below2 = std::nextafter(2.0f, 0.0f), above2 = std::nextafter(2.0f, 3.0f);
+  for (bool fromBelow : {false, true}) {
+    for (bool flipped : {false, true}) {  // both windings: both signs of det for each side
+      const Ray ray = fromBelow ? Ray{{-0.5f, -0.25f, -4.0f}, {0, 0, 1}} : Ray{{-0.5f, -0.25f, 0.0f}, {0, 0, -1}};
+      const Point3& b = flipped ? p2 : p1;
+      const Point3& c = flipped ? p1 : p2;
+      CAPTURE(fromBelow);
+      CAPTURE(flipped);
+      auto hit = candidate::intersectTriangle(ray, kAll, p0, b, c);
+      REQUIRE(hit.has_value());
+      CHECK(hit->t == 2.0f);
+      CHECK_FALSE(candidate::intersectTriangle(ray, {2.0f, kInfinity}, p0, b, c).has_value());
+      CHECK_FALSE(candidate::intersectTriangle(ray, {0.0f, 2.0f}, p0, b, c).has_value());
+      CHECK_FALSE(candidate::intersectTriangle(ray, {2.0f, 2.0f}, p0, b, c).has_value());
+      CHECK(candidate::intersectTriangle(ray, {below2, kInfinity}, p0, b, c).has_value());
+      CHECK(candidate::intersectTriangle(ray, {0.0f, above2}, p0, b, c).has_value());
+      CHECK(candidate::intersectTriangle(ray, {below2, above2}, p0, b, c).has_value());
+      CHECK(candidate::intersectTriangle(ray, {1.5f, 2.5f}, p0, b, c).has_value());
+      CHECK_FALSE(candidate::intersectTriangle(ray, {2.5f, 3.0f}, p0, b, c).has_value());
+      CHECK_FALSE(candidate::intersectTriangle(ray, {0.5f, 1.5f}, p0, b, c).has_value());
+    }
+  }
+}
+
+TEST_CASE("T2.1 triangle: the range holds at every scale, from both sides and along the axes" *
+          grading(2, "compare t with both ends of the range whatever the size of det (it is twice the "
+                     "triangle's projected area: 1e-6 for a triangle 1e-3 across, 1e10 for one 1e5 across): "
+                     "tScaled against range * det, never range / det, and no threshold on det")) {
+  Random random(25);
+  int checked = 0;
+  // Directions: random, and along or within rounding of an axis, where a
+  // permutation that does not put the largest component last divides by ~0.
+  std::vector<DVec3> directions;
+  for (int axis = 0; axis < 3; ++axis)
+    for (double tiny : {0.0, 1e-7, 1e-20}) {
+      DVec3 d(0.0);
+      d[axis] = 1.0;
+      d[(axis + 1) % 3] = tiny;
+      d[(axis + 2) % 3] = -0.5 * tiny;
+      directions.push_back(d);
+      directions.push_back(-d);
+    }
+  for (double scale : {1e-3, 1.0, 1e5}) {
+    for (int i = 0; i < 240; ++i) {
+      Point3 p0(scale * random.inCube(1)), p1(scale * random.inCube(1)), p2(scale * random.inCube(1));
+      DVec3 a(p0), b(p1), c(p2), n = glm::cross(b - a, c - a);
+      if (glm::length(n) < 0.05 * scale * scale) continue;
+      DVec3 direction = i % 2 ? random.unitVector() : directions[size_t(i / 2) % directions.size()];
+      if (std::abs(glm::dot(glm::normalize(n), direction)) < 0.2) continue;  // no grazing here
+      double b1 = random.uniform(0.05, 0.9), b2 = random.uniform(0.05, 0.95 - b1);
+      DVec3 target = (1 - b1 - b2) * a + b1 * b + b2 * c;
+      Ray ray{Point3(target - direction * (scale * random.uniform(0.5, 5.0))), Vec3(direction)};
+      const double t = planeHit(ray, p0, p1, p2).t;
+      auto in = [&](double lo, double hi) {
+        return candidate::intersectTriangle(ray, {float(lo * t), float(hi * t)}, p0, p1, p2).has_value();
+      };
+      CAPTURE(scale);
+      CAPTURE(i);
+      CAPTURE(str(Vec3(direction)));
+      CAPTURE(t);
+      REQUIRE(candidate::intersectTriangle(ray, kAll, p0, p1, p2).has_value());
+      CHECK(in(0.9, 1.1));
+      CHECK(in(0.999, 1e3));
+      CHECK_FALSE(in(0.0, 0.99));
+      CHECK_FALSE(in(0.5, 0.99));
+      CHECK_FALSE(in(1.01, 1e3));
+      // The ray turned around: the triangle is behind its origin.
+      CHECK_FALSE(candidate::intersectTriangle(Ray{ray.origin, -ray.direction}, kAll, p0, p1, p2).has_value());
+      ++checked;
+    }
+  }
+  CHECK(checked > 400);
+}
+
 TEST_CASE("T2.1 triangle: both faces are hit (no back-face culling)" *
           grading(2, "do not reject det < 0: a ray from behind the triangle sees its back face, and "
                      "glass and closed meshes need those hits")) {

@@ -91,6 +91,32 @@ TEST_CASE("T2.2 sphere: misses beside, behind and outside the range; the far sid
   CHECK(*far == doctest::Approx(6.0f));
 }
 
+TEST_CASE("T2.2 sphere: the range is open — a root exactly at range.min or range.max does not count" *
+          grading(2, "return the smaller root r with range.min < r < range.max (range.contains): a root equal "
+                     "to an end of the range is outside it, so the other root may be the answer")) {
+  // Roots at exactly t = 2 and t = 8, in float and double, for any method.
+  const Ray ray{{0, 0, 0}, {0, 0, -1}};
+  const Point3 c{0, 0, -5};
+  const float r = 3.0f;
+  auto hit = [&](float lo, float hi) { return candidate::intersectSphere(ray, {lo, hi}, c, r); };
+  REQUIRE(hit(0.0f, kInfinity).has_value());
+  CHECK(*hit(0.0f, kInfinity) == 2.0f);
+  REQUIRE(hit(2.0f, kInfinity).has_value());  // the near root is excluded: the far one
+  CHECK(*hit(2.0f, kInfinity) == 8.0f);
+  CHECK_FALSE(hit(0.0f, 2.0f).has_value());
+  CHECK_FALSE(hit(2.0f, 8.0f).has_value());
+  CHECK_FALSE(hit(8.0f, kInfinity).has_value());
+  REQUIRE(hit(std::nextafter(2.0f, 0.0f), kInfinity).has_value());
+  CHECK(*hit(std::nextafter(2.0f, 0.0f), kInfinity) == 2.0f);
+  REQUIRE(hit(3.0f, std::nextafter(8.0f, 9.0f)).has_value());
+  CHECK(*hit(3.0f, std::nextafter(8.0f, 9.0f)) == 8.0f);
+  // From inside (the origin at the centre): the roots are -3 and 3.
+  const Ray inside{{0, 0, -5}, {0, 0, -1}};
+  CHECK_FALSE(candidate::intersectSphere(inside, {0.0f, 3.0f}, c, r).has_value());
+  CHECK_FALSE(candidate::intersectSphere(inside, {3.0f, kInfinity}, c, r).has_value());
+  REQUIRE(candidate::intersectSphere(inside, {0.0f, std::nextafter(3.0f, 4.0f)}, c, r).has_value());
+}
+
 TEST_CASE("T2.2 sphere: from inside, the hit is on the far side (origin inside)" *
           grading(2, "inside the sphere one root is negative: return the positive one, t1 = q / a or "
                      "c' / q, whichever is in range")) {
@@ -176,6 +202,13 @@ TEST_CASE("T2.2 sphere: a ray starting on the surface finds the far side going i
       CHECK(*t == doctest::Approx(-2.0 * radius * glm::dot(in, normal)).epsilon(1e-3));
       CHECK_FALSE(candidate::intersectSphere(Ray{origin, Vec3(-in)}, range, center, float(radius)).has_value());
     }
+  }
+  // Exactly on the surface and tangent to it: both roots are t = 0, outside
+  // (0, inf): no hit.
+  for (Vec3 direction : {Vec3(0, 0, 1), Vec3(0, -1, 0), Vec3(0, 0.6f, -0.8f)}) {
+    CAPTURE(str(direction));
+    CHECK_FALSE(candidate::intersectSphere(Ray{{3.0f, 1.0f, 2.0f}, direction}, kAll, {1.0f, 1.0f, 2.0f}, 2.0f)
+                    .has_value());
   }
 }
 

@@ -7,6 +7,8 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <iterator>
+#include <numbers>
 
 #include "check.h"
 #include "image_scenes.h"
@@ -184,17 +186,25 @@ TEST_CASE("T6.5 glass: reflection is chosen with the Fresnel probability (chi-sq
                      "F from Schlick with the outside cosine (or exact Fresnel); on total internal reflection always reflect")) {
   constexpr int kSamples = 200000;
   Random random(66);
-  for (int trial = 0; trial < 6; ++trial) {
-    const bool entering = trial % 2 == 0;
-    Vec3 wo = randomDirection(random, entering);
-    const float ior = 1.5f;
-    // Leaving the glass, the outside cosine is the refracted ray's (Snell, in double).
-    const double sin2Outside = double(ior) * ior * (1.0 - double(wo.z) * wo.z);
-    if (!entering && sin2Outside >= 1.0) continue;  // total internal reflection: its own check below
-    const double cosOutside = entering ? wo.z : std::sqrt(1.0 - sin2Outside);
+  // Entering and leaving at fixed outside angles (sin theta outside), so
+  // that leaving directions lie inside the escape cone: just inside it at
+  // sin = 0.97 (grazing outside), and at indices other than 1.5.
+  struct Trial {
+    bool entering;
+    double sinOutside;
+    float ior;
+  };
+  const Trial trials[] = {{true, 0.3, 1.5f},  {true, 0.9, 1.5f},   {false, 0.2, 1.5f}, {false, 0.7, 1.5f},
+                          {false, 0.97, 1.5f}, {true, 0.6, 2.4f}, {false, 0.6, 1.33f}};
+  for (int trial = 0; trial < int(std::size(trials)); ++trial) {
+    const auto [entering, sinOutside, ior] = trials[trial];
+    const double phi = random.uniform(0.0, 2.0 * std::numbers::pi);
+    const double sinWo = entering ? sinOutside : sinOutside / ior, cosWo = std::sqrt(1.0 - sinWo * sinWo);
+    const Vec3 wo(DVec3(sinWo * std::cos(phi), sinWo * std::sin(phi), entering ? cosWo : -cosWo));
+    const double cosOutside = std::sqrt(1.0 - sinOutside * sinOutside);
     // The handout allows Schlick's approximation or the exact dielectric
     // Fresnel equations: the reflected fraction must match one of them.
-    const double r0 = 0.04, m = 1.0 - cosOutside;
+    const double r0 = std::pow((double(ior) - 1.0) / (double(ior) + 1.0), 2.0), m = 1.0 - cosOutside;
     const double schlick = r0 + (1 - r0) * m * m * m * m * m;
     const double cosInside = std::sqrt(1.0 - (1.0 - cosOutside * cosOutside) / (double(ior) * ior));
     const double rs = (cosOutside - ior * cosInside) / (cosOutside + ior * cosInside);
@@ -225,19 +235,28 @@ TEST_CASE("T6.5 glass: reflection is chosen with the Fresnel probability (chi-sq
                                         {kSamples * fresnel, kSamples * (1.0 - fresnel)});
       return r.failure.empty() && r.pValue > 1e-4;
     };
-    INFO("entering " << entering << ", cos " << cosOutside << ": " << reflections / kSamples
-                     << " reflected; Schlick F = " << schlick << ", exact F = " << exact);
+    INFO("entering " << entering << ", ior " << ior << ", cos outside " << cosOutside << ": "
+                     << reflections / kSamples << " reflected; Schlick F = " << schlick << ", exact F = " << exact);
     CHECK((matches(schlick) || matches(exact)));
   }
-  // Past the critical angle from inside: always reflect, with the reflectance.
-  const float critical = std::asin(1.0f / 1.5f) + 0.05f;
-  Vec3 tir(std::sin(critical), 0.0f, -std::cos(critical));
-  for (float u : {0.0f, 0.5f, 0.999f}) {
-    BsdfSample s = candidate::sampleGlass(tir, Color(0.9f), Color(0.8f), 1.5f, u);
-    CHECK(s.wi.z < 0.0f);
-    CHECK(s.pdf == doctest::Approx(1.0f));
-    CHECK(pathWeight(s).y == doctest::Approx(0.9f));
+  // Past the critical angle from inside, even by 0.1 %: always reflect, with
+  // the reflectance. Just below it the ray still refracts (for u near 1).
+  for (double past : {1.001, 1.05}) {
+    const double sinInside = past / 1.5;
+    Vec3 tir(DVec3(sinInside, 0.0, -std::sqrt(1.0 - sinInside * sinInside)));
+    for (float u : {0.0f, 0.5f, 0.999f}) {
+      CAPTURE(past);
+      BsdfSample s = candidate::sampleGlass(tir, Color(0.9f), Color(0.8f), 1.5f, u);
+      CHECK(s.wi.z < 0.0f);
+      CHECK(s.pdf == doctest::Approx(1.0f));
+      CHECK(pathWeight(s).y == doctest::Approx(0.9f));
+    }
   }
+  const double sinBelow = 0.999 / 1.5;
+  Vec3 below(DVec3(sinBelow, 0.0, -std::sqrt(1.0 - sinBelow * sinBelow)));
+  BsdfSample refracted = candidate::sampleGlass(below, Color(0.9f), Color(0.8f), 1.5f, 0.9999f);
+  INFO("just inside the escape cone, u = 0.9999: wi " << str(refracted.wi) << ", pdf " << refracted.pdf);
+  CHECK(refracted.wi.z > 0.0f);
 }
 
 TEST_CASE("T6.5 furnace: a perfect mirror and lossless glass vanish in a uniform environment" *
