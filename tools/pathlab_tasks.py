@@ -19,3 +19,10 @@ def tasks(root: Path = ROOT) -> dict:
     if sorted(found) != list(range(1, len(found) + 1)):
         raise SystemExit(f"pathlab_tasks: tasks/ folders are not numbered 01 to {len(found):02d}: {sorted(found)}")
     return found
+
+
+# Added to the compiler line of a task file graded as a submission (tools/grade,
+# tools/mutate; tests/CMakeLists.txt's validity candidates likewise): libstdc++'s
+# checks turn an empty std::optional dereferenced or an index past a vector's
+# end into a stopped test instead of a read of whatever memory holds.
+SUBMISSION_FLAGS = ["-D_GLIBCXX_ASSERTIONS"]

@@ -199,6 +199,26 @@ TEST_CASE("T5.2 path tracing: Russian roulette keeps the mean, energy never grow
   CHECK(c.agrees(1.0));
 }
 
+TEST_CASE("T5.2 path tracing: seen from inside lossless glass, a uniform enclosure is n^2 times as bright" *
+          grading(2, "leaving glass multiplies the throughput by (n_o / n_t)^2 = 2.25: it can exceed 1, so Russian "
+                     "roulette must continue with q = min(0.95, max component) — never a q above 1, which would "
+                     "divide by q without ever stopping")) {
+  // The enclosure of the first test (L = 1 everywhere in its air) around a
+  // lossless glass ball; radiance inside glass of index n is n^2 L. The
+  // camera sits at half the ball's radius: no ray from there is totally
+  // reflected for ever (sin theta <= 1/2 < 1/1.5 at every wall of the ball).
+  Scene scene = closedEnclosure(0.5f, 0.5f);
+  Material glass{.name = "glass", .type = MaterialType::Glass, .albedo = Color(1.0f), .transmittance = Color(1.0f),
+                 .ior = 1.5f};
+  scene.materials.push_back(glass);
+  scene.spheres.push_back(Sphere{Point3(0.0f), 0.4f, uint32_t(scene.materials.size() - 1)});
+  Rig rig(std::move(scene));
+  TraceContext context = rig.context(200, 1);
+  MeanEstimate m = pathMean(context, Point3(0.2f, 0.0f, 0.0f), 20000, 17);
+  INFO(m.describe(2.25));
+  CHECK(m.agrees(2.25));
+}
+
 TEST_CASE("T5.2 path tracing: no NaN or Inf in the Cornell box, at grazing angles included" *
           grading(2, "skip samples with pdf 0, never divide by a zero cosine, and stop a path whose throughput "
                      "is 0")) {
