@@ -398,6 +398,9 @@ TEST_CASE("T4.4 direct lighting: exactly 0 where no light arrives — a mirror, 
   Hit shaded = hitFromAbove(context, Point3(-2.0f, 0, 2.0f), Vec3(0.0f, 0.3f, 0.0f));
   CHECK(estimate(context, onMirror, Vec3(0, 1, 0), 200).mean() == 0.0);
   CHECK(estimate(context, shaded, Vec3(0, 1, 0), 200).mean() == 0.0);
+  // Control: out in the open the point light arrives.
+  Hit open = hitFromAbove(context, Point3(0.5f, 0, 0.5f));
+  CHECK(estimate(context, open, Vec3(0, 1, 0), 20).mean() > 0.0);
 }
 
 TEST_CASE("T4.4 direct lighting: radiometry at every scale — a dark surface under a bright light, a light 1e-4 away" *

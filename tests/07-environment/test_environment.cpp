@@ -239,6 +239,14 @@ TEST_CASE("T7.4 distribution: degenerate maps — one column, one row, one pixel
     // A sample on a pixel's edge can round into its neighbour, and sin(theta)
     // near a pole is recomputed from a rounded v: a few may differ.
     CHECK(disagree <= 20);
+    // Every pixel here has light, so every pixel's centre has a pdf above 0.
+    std::vector<Vec3> centres;
+    for (int j = 0; j < m.height; ++j)
+      for (int i = 0; i < m.width; ++i)
+        centres.push_back(directionAt(Point2((float(i) + 0.5f) / float(m.width), (float(j) + 0.5f) / float(m.height))));
+    int dark = 0;
+    for (float pdf : candidate::environmentPdf(d, centres)) dark += !(pdf > 0.0f);
+    CHECK(dark == 0);
   }
 }
 
