@@ -8,7 +8,7 @@
 
 #include <cmath>
 #include <numbers>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "check.h"
@@ -408,7 +408,11 @@ TEST_CASE("T4.4 direct lighting: radiometry at every scale — a dark surface un
                      "of 1e7 is as bright as 1 under 1, and a light 5e-4 away still lights (r^2 = 2.5e-7)")) {
   // The same point-light and area-light answer with albedo and light scaled
   // by 1e-7 and 1e7 (point light), and with everything shrunk to 1e-4.
-  for (auto [albedo, power, size] : {std::tuple{1e-7f, 1e7f, 1.0f}, std::tuple{0.5f, 1.0f, 5e-4f}}) {
+  struct Case {
+    float albedo, power, size;
+  };
+  for (const Case& c : {Case{1e-7f, 1e7f, 1.0f}, Case{0.5f, 1.0f, 5e-4f}}) {
+    const float albedo = c.albedo, power = c.power, size = c.size;  // (plain variables: CAPTURE takes them by reference)
     Scene scene;
     uint32_t floor = addMaterial(scene, Color(albedo));
     addQuad(scene, {-10 * size, 0, 10 * size}, {20 * size, 0, 0}, {0, 0, -20 * size}, floor);
@@ -432,7 +436,8 @@ TEST_CASE("T4.4 direct lighting: radiometry at every scale — a dark surface un
     CHECK(m.agrees(expected));
   }
   // A dim sky on a bright floor, and a bright sky on a dark floor: rho L either way.
-  for (auto [albedo, sky] : {std::pair{1.0f, 1e-7f}, std::pair{1e-7f, 1e7f}}) {
+  for (const auto& [albedoOf, skyOf] : {std::pair{1.0f, 1e-7f}, std::pair{1e-7f, 1e7f}}) {
+    const float albedo = albedoOf, sky = skyOf;
     Scene scene;
     uint32_t floor = addMaterial(scene, Color(albedo));
     addQuad(scene, {-10, 0, 10}, {20, 0, 0}, {0, 0, -20}, floor);

@@ -197,7 +197,9 @@ TEST_CASE("T6.5 glass: reflection is chosen with the Fresnel probability (chi-sq
   const Trial trials[] = {{true, 0.3, 1.5f},  {true, 0.9, 1.5f},   {false, 0.2, 1.5f}, {false, 0.7, 1.5f},
                           {false, 0.97, 1.5f}, {true, 0.6, 2.4f}, {false, 0.6, 1.33f}};
   for (int trial = 0; trial < int(std::size(trials)); ++trial) {
-    const auto [entering, sinOutside, ior] = trials[trial];
+    const bool entering = trials[trial].entering;  // (plain variables: INFO takes them by reference)
+    const double sinOutside = trials[trial].sinOutside;
+    const float ior = trials[trial].ior;
     const double phi = random.uniform(0.0, 2.0 * std::numbers::pi);
     const double sinWo = entering ? sinOutside : sinOutside / ior, cosWo = std::sqrt(1.0 - sinWo * sinWo);
     const Vec3 wo(DVec3(sinWo * std::cos(phi), sinWo * std::sin(phi), entering ? cosWo : -cosWo));
