@@ -227,7 +227,8 @@ TEST_CASE("T3.2 build: many primitives with identical centroids — terminates, 
 }
 
 TEST_CASE("T3.2 build: primitives spaced ever wider apart — the tree stays within kMaxBvhDepth" *
-          grading(1, "SAH peels one primitive off per level when each is 1.5 times farther out than the last: "
+          grading(1, "SAH peels one primitive off per level when each is 1.5 times farther out than the last, "
+                     "or 17 times nearer along any of three axes: "
                      "count the depth of each node and split in halves (by the median centroid) below a depth "
                      "limit, so no leaf is deeper than kMaxBvhDepth")) {
   for (float direction : {1.0f, -1.0f}) {  // the peeled chain on one side of the tree, then the other
@@ -239,6 +240,26 @@ TEST_CASE("T3.2 build: primitives spaced ever wider apart — the tree stays wit
     b.bvh = candidate::buildBvh(b.bounds);
     CAPTURE(direction);
     requireValid(b, b.bounds.size());
+  }
+  // Three chains of points, one along each axis, each point 17 times nearer
+  // the origin than the last: along every axis one point sits in the top bin
+  // and all others in the bottom one, so every split any binned SAH can make
+  // peels off one point, whichever axis it picks: ~90 levels without a limit.
+  // Areas stay finite (extents 2^-60..2^60).
+  for (float side : {1.0f, -1.0f}) {  // the chain in the left children, then in the right ones
+    Built chains;
+    for (int axis = 0; axis < 3; ++axis) {
+      for (int k = 0; k < 30; ++k) {
+        Point3 p(0.0f);
+        p[axis] = side * 0x1.0p60f / std::pow(17.0f, float(k));
+        chains.bounds.push_back(Aabb{p, p});
+      }
+    }
+    chains.bounds.push_back(Aabb{Point3(0.0f), Point3(0.0f)});
+    chains.bvh = candidate::buildBvh(chains.bounds);
+    INFO("three chains of points, one per axis, each 17x nearer the origin, on the " << (side > 0 ? "+" : "-")
+                                                                                      << " side");
+    requireValid(chains, chains.bounds.size());
   }
 }
 
@@ -267,7 +288,8 @@ TEST_CASE("T3.2 build: a single primitive and an empty scene" *
 
 TEST_CASE("T3.2 build: the tree's SAH cost is close to the reference's (no huge leaves, no poor splits)" *
           grading(3, "evaluate cost = 1 + (area(L) N_L + area(R) N_R) / area(node) for every bin boundary on "
-                     "all three axes, keep the cheapest, and make a leaf only when that is cheaper")) {
+                     "all three axes, keep the cheapest, and make a leaf only when that is cheaper; compare extents "
+                     "with 0, not with a fixed epsilon such as 1e-6 (scenes come at every scale)")) {
   // SAH costs of the reference build (solutions/03-bvh/bvh.cpp) on the same
   // inputs; a correct SAH builder (other bin counts, a sweep) lands within
   // a few percent. Median or spatial-middle splits land 20-60 % higher.
@@ -278,6 +300,18 @@ TEST_CASE("T3.2 build: the tree's SAH cost is close to the reference's (no huge 
   requireValid(b, scan.primitives.size());
   INFO("scan-like mesh SAH cost " << sahCost(b.bvh) << ", reference " << kReferenceScan);
   CHECK(sahCost(b.bvh) <= 1.15 * kReferenceScan);
+  // The cost is a ratio of areas: the same mesh a million times smaller or
+  // larger has the same cost (an absolute epsilon on extents breaks that).
+  for (float scale : {1e-6f, 1e6f}) {
+    Scene scaled = scan;
+    for (Point3& p : scaled.meshes[0].positions) p *= scale;
+    scaled.indexPrimitives();
+    Built s = build(scaled);
+    requireValid(s, scaled.primitives.size());
+    INFO("the scan-like mesh scaled by " << scale << ": SAH cost " << sahCost(s.bvh) << ", reference "
+                                         << kReferenceScan);
+    CHECK(sahCost(s.bvh) <= 1.15 * kReferenceScan);
+  }
 
   // Clusters of very different density: where SAH matters most (fixed: the
   // reference cost above belongs to exactly this scene).

@@ -251,8 +251,11 @@ namespace {
 
 // Diffuse and mirror spheres on a floor under a uniform sky: the sky is seen
 // directly, in the mirror, and lights everything by next-event estimation.
+// The clay ball is a coarse mesh with vertex normals, so the shading normal
+// (the cosine's) and the geometric one (the ray offset's) differ by up to 20
+// degrees.
 Scene skyScene() {
-  return sceneFromJson(R"({
+  Scene scene = sceneFromJson(R"({
     "camera": { "position": [0, 1.0, 4], "look_at": [0, 0.5, 0], "up": [0, 1, 0], "vfov": 40 },
     "render": { "width": 48, "height": 36, "spp": 64, "max_depth": 3 },
     "materials": {
@@ -263,12 +266,40 @@ Scene skyScene() {
     "meshes": [
       { "name": "ground", "material": "ground", "quad": { "corner": [-4, 0, 4], "edge_u": [8, 0, 0], "edge_v": [0, 0, -8] } }
     ],
-    "spheres": [
-      { "center": [-0.6, 0.5, 0], "radius": 0.5, "material": "clay" },
-      { "center": [0.6, 0.5, -0.2], "radius": 0.5, "material": "mirror" }
-    ],
+    "spheres": [ { "center": [0.6, 0.5, -0.2], "radius": 0.5, "material": "mirror" } ],
     "environment": { "color": [0.5, 0.6, 0.8] }
   })", "sky");
+  scene.meshes.push_back(smoothSphere(1, Point3(-0.6f, 0.5f, 0.0f), 0.5f, materialIndex(scene, "clay")));
+  return scene;
+}
+
+// A floor whose vertex normals all lean 40 degrees towards a white wall,
+// lit mostly by that wall: a lamp faces the wall, edge-on to the floor. The
+// floor's shading hemisphere tilts towards the wall, so the wall's light
+// arrives at a large shading cosine and a small geometric one: a throughput
+// with the geometric cosine darkens the floor about twofold.
+Scene leaningNormalsScene() {
+  Scene scene = sceneFromJson(R"({
+    "camera": { "position": [0.0, 1.5, 2.6], "look_at": [-0.4, 0.3, -0.2], "up": [0, 1, 0], "vfov": 50 },
+    "render": { "width": 40, "height": 30, "spp": 64, "max_depth": 2 },
+    "materials": {
+      "white": { "albedo": [0.8, 0.8, 0.8] },
+      "floor": { "albedo": [0.7, 0.6, 0.5] },
+      "lamp":  { "albedo": [0, 0, 0], "emission": [6, 6, 6] }
+    },
+    "meshes": [
+      { "name": "wall", "material": "white", "quad": { "corner": [-1, 0, 1], "edge_u": [0, 0, -2], "edge_v": [0, 2, 0] } },
+      { "name": "lamp facing the wall", "material": "lamp",
+        "quad": { "corner": [0.2, 0.4, -0.8], "edge_u": [0, 0, 1.6], "edge_v": [0, 1.4, 0] } }
+    ]
+  })", "leaning normals");
+  TriangleMesh floor;
+  floor.positions = {{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}};
+  floor.normals.assign(4, Vec3(-std::sin(glm::radians(40.0f)), std::cos(glm::radians(40.0f)), 0.0f));
+  floor.triangles = {{0, 1, 2}, {0, 2, 3}};
+  floor.material = materialIndex(scene, "floor");
+  scene.meshes.push_back(floor);
+  return scene;
 }
 
 }  // namespace
@@ -279,6 +310,13 @@ TEST_CASE("T5.2 image: a Cornell box with a mirror and a glass sphere, and a sky
                      "emission counted after diffuse bounces as well (light sampling already covered it)")) {
   checkImage({"05-path-tracing", "cornell-mirror-glass", cornellBox(48, 36, 64, 4, true), {}});
   checkImage({"05-path-tracing", "sky", skyScene(), {}});
+}
+
+TEST_CASE("T5.2 image: a floor with vertex normals leaning towards a lit wall" *
+          grading(2, "compare your picture with the reference (files named above): a floor too dark means the "
+                     "throughput's cosine came from the geometric normal; take it from bsdf.normal(), the shading "
+                     "normal the direction was sampled around")) {
+  checkImage({"05-path-tracing", "leaning-normals", leaningNormalsScene(), {}});
 }
 
 TEST_CASE("T5.2 image: -m 0, 1, 2 and 3 bounces" *

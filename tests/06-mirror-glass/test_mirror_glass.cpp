@@ -342,12 +342,14 @@ Scene glassUnderSkyScene() {
       { "name": "slab right", "material": "glass", "quad": { "corner": [1.7, 0.05, 0.6], "edge_u": [0, 0, -0.3], "edge_v": [0, 0.5, 0] } }
     ],
     "spheres": [
-      { "center": [-0.8, 0.5, 0.2], "radius": 0.5, "material": "glass" },
       { "center": [-0.6, 0.3, -0.8], "radius": 0.3, "material": "red" },
       { "center": [0.4, 0.35, -0.4], "radius": 0.35, "material": "air" },
       { "center": [0.4, 0.25, -0.4], "radius": 0.2, "material": "red" }
     ]
   })", "glass under a sky");
+  // The glass ball is a mesh with vertex normals: refraction bends around
+  // the shading normal, and inside from outside comes from the outward one.
+  scene.meshes.push_back(smoothSphere(2, Point3(-0.8f, 0.5f, 0.2f), 0.5f, materialIndex(scene, "glass")));
   Environment sky;
   sky.imagePath = "(a sky made in code)";
   sky.image = skyMap(32, 16, 0.3f, 0.3f, 4.0f);

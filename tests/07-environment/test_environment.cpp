@@ -385,7 +385,8 @@ Environment loadedEnvironment(bool withSun) {
   return *loaded.environment;
 }
 
-// Diffuse spheres on a floor, looking along +x (the u seam) and a little up.
+// Diffuse spheres on a floor, looking along +x (the u seam) and a little up;
+// the white one a mesh with vertex normals (the sky lights the shading hemisphere).
 Scene skyLitScene(bool withSun) {
   Scene scene = sceneFromJson(R"({
     "camera": { "position": [-1, 0.8, 0], "look_at": [3, 1.0, 0], "up": [0, 1, 0], "vfov": 60 },
@@ -394,9 +395,9 @@ Scene skyLitScene(bool withSun) {
     "meshes": [
       { "name": "floor", "material": "white", "quad": { "corner": [-2, 0, 3], "edge_u": [6, 0, 0], "edge_v": [0, 0, -6] } }
     ],
-    "spheres": [ { "center": [2, 0.4, -0.7], "radius": 0.4, "material": "clay" },
-                 { "center": [2.5, 0.5, 0.8], "radius": 0.5, "material": "white" } ]
+    "spheres": [ { "center": [2, 0.4, -0.7], "radius": 0.4, "material": "clay" } ]
   })", "sky-lit");
+  scene.meshes.push_back(smoothSphere(2, Point3(2.5f, 0.5f, 0.8f), 0.5f, materialIndex(scene, "white")));
   scene.environment = loadedEnvironment(withSun);
   return scene;
 }

@@ -178,3 +178,19 @@ TEST_CASE("wide BVH: an empty tree hits nothing; the layout packs four triangles
   CHECK(wide.packetCount() >= scene.triangleCount() / 4);
   CHECK(wide.laneOccupancy() > 0.6);
 }
+
+// Geometry a few ulps of FLT_MIN across: 16 / extent overflows to inf, and a
+// binning by (centroid - min) * inf would index bin int(NaN). The build must
+// stay valid at every scale a float can hold.
+TEST_CASE("task 3's build: primitives whose centroids span less than 1e-37 still give a valid tree") {
+  for (float size : {1e-37f, 1e-39f, 1e-44f}) {
+    std::vector<Aabb> bounds;
+    for (int k = 0; k < 40; ++k) {
+      const Point3 p(size * float(k % 7) / 7.0f, size * float(k % 5) / 5.0f, size * float(k % 3) / 3.0f);
+      bounds.push_back(Aabb{p, p});
+    }
+    const Bvh bvh = buildBvh(bounds);
+    CAPTURE(size);
+    CHECK(validateBvh(bvh, bounds.size(), &bounds) == "");
+  }
+}

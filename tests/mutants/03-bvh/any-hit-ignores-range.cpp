@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <numeric>
 
 namespace pathlab {
@@ -97,8 +98,15 @@ class Builder {
 
   // The same arithmetic as the binning in bestSplit, so partitions match the counts.
   static int binOf(const Point3& centroid, const Aabb& centroidBounds, int axis) {
-    const float scale = float(kBins) / centroidBounds.extent()[axis];
+    const float scale = binScale(centroidBounds.extent()[axis]);
     return std::min(int((centroid[axis] - centroidBounds.min[axis]) * scale), kBins - 1);
+  }
+
+  // kBins / extent (0 for an axis where every centroid is equal), at most the
+  // largest float: below extent 1e-37 the quotient overflows, and
+  // (centroid - min) * inf is NaN for the lowest centroid, whose int() is undefined.
+  static float binScale(float extent) {
+    return extent > 0.0f ? std::min(float(kBins) / extent, std::numeric_limits<float>::max()) : 0.0f;
   }
 
   // SAH: cost(split) = C_trav + C_isect * (A_left N_left + A_right N_right) / A_node,
@@ -108,8 +116,7 @@ class Builder {
     std::array<std::array<Aabb, kBins>, 3> binBounds;
     std::array<std::array<uint32_t, kBins>, 3> binCount{};
     const Vec3 extent = centroidBounds.extent();
-    const Vec3 scale(extent.x > 0 ? float(kBins) / extent.x : 0.0f, extent.y > 0 ? float(kBins) / extent.y : 0.0f,
-                     extent.z > 0 ? float(kBins) / extent.z : 0.0f);
+    const Vec3 scale(binScale(extent.x), binScale(extent.y), binScale(extent.z));
     for (uint32_t s = first; s < first + count; ++s) {
       const uint32_t p = bvh_.primitives[s];
       const Vec3 offset = (centroids_[p] - centroidBounds.min) * scale;
