@@ -106,8 +106,12 @@ class Sandbox:
         if self.root and mode in ("bwrap", "uid"):
             prefix += ["setpriv", f"--reuid={SANDBOX_UID}", f"--regid={SANDBOX_UID}", "--clear-groups",
                        "--inh-caps=-all", "--bounding-set=-all", "--no-new-privs", "--"]
+        sanitizer_options = [f"{name}={os.environ[name]}" for name in
+                             ("TSAN_OPTIONS", "ASAN_OPTIONS", "UBSAN_OPTIONS", "LSAN_OPTIONS") if name in os.environ]
         if mode != "bwrap":
-            return prefix + argv
+            # A clean environment: the grader's variables are not the candidate's to read.
+            return prefix + ["env", "-i", "PATH=/usr/bin:/bin", "TMPDIR=/tmp", "HOME=/tmp", "LANG=C.UTF-8",
+                             *sanitizer_options] + argv  # (argv[0] is an absolute path: never an assignment)
         box = ["bwrap", "--unshare-all", "--die-with-parent", "--new-session",
                "--ro-bind", "/usr", "/usr", "--symlink", "usr/lib", "/lib", "--symlink", "usr/lib64", "/lib64",
                "--symlink", "usr/bin", "/bin", "--symlink", "usr/sbin", "/sbin",

@@ -123,8 +123,16 @@ void write(const Image& image, const std::filesystem::path& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: pathlab-envmap OUT_DIR\n");
+  const std::string usage =
+      "usage: pathlab-envmap OUT_DIR\n"
+      "Writes sky-sun.exr, studio.exr, hot-pixel.exr, constant.exr and black.exr into OUT_DIR.\n";
+  if (argc == 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
+    std::fputs(usage.c_str(), stdout);
+    return 0;
+  }
+  // A folder named like an option is a typo, not a wish.
+  if (argc != 2 || argv[1][0] == '-') {
+    std::fputs(usage.c_str(), stderr);
     return 1;
   }
   try {

@@ -46,7 +46,11 @@ Camera parseCamera(const Object& o) {
   if (glm::length(camera.lookAt - camera.position) == 0.0f) {
     o.fail(o.field("look_at"), "must differ from position");
   }
-  if (glm::length(camera.up) == 0.0f) o.fail(o.field("up"), "must not be the zero vector");
+  // Only up's direction matters: normalised in double, so (1e30, 1e30, 0) and
+  // (1e-30, 1e-30, 0) mean what (1, 1, 0) means instead of overflowing later.
+  const glm::dvec3 up(camera.up);
+  if (!(glm::length(up) > 0.0)) o.fail(o.field("up"), "must not be the zero vector");
+  camera.up = Vec3(glm::normalize(up));
   return camera;
 }
 
@@ -332,7 +336,12 @@ Scene parseScene(const Source& source, const Json& root) {
     Environment env;
     env.color = o.color("color", env.color);
     env.scale = o.number("scale", env.scale);
-    if (env.scale < 0.0f) o.fail(o.field("scale"), "expected a non-negative number");
+    // Radiance times the sampling tables' weights must stay finite in float.
+    constexpr float kMaxRadiance = 1e12f;
+    if (!(env.scale >= 0.0f && env.scale <= kMaxRadiance)) {
+      o.fail(o.field("scale"), "expected a number from 0 to 1e12, got " + o.at("scale").dump());
+    }
+    if (!(maxComponent(env.color) <= kMaxRadiance)) o.fail(o.field("color"), "expected values from 0 to 1e12");
     if (o.has("image")) {
       std::string file = o.string("image", "");
       fs::path path = fs::path(file).is_absolute() ? fs::path(file) : source.baseDir / file;

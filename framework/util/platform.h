@@ -49,7 +49,8 @@ struct FileRead {
 };
 FileRead readRegularFile(const std::string& path, size_t maxBytes);
 
-// Creates or truncates `path`, writes `bytes` and flushes them to the
+// Creates `path` as a new file (one already there, or a link, is removed
+// first, never written through), writes `bytes` and flushes them to the
 // device; on failure removes what it wrote. Returns "" or why it failed.
 std::string writeFileDurably(const std::string& path, std::string_view bytes);
 // Renames `from` to `to`, replacing `to`. Returns "" or why it failed.

@@ -88,7 +88,13 @@ FileRead readRegularFile(const std::string& path, size_t maxBytes) {
 }
 
 std::string writeFileDurably(const std::string& path, std::string_view bytes) {
-  Descriptor file{::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644)};
+  // Created afresh, never through what is already there: a symbolic link
+  // planted at this name would otherwise send the bytes to its target.
+  constexpr int kCreate = O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC;
+  Descriptor file{::open(path.c_str(), kCreate, 0644)};
+  if (file.fd < 0 && errno == EEXIST && ::unlink(path.c_str()) == 0) {  // a leftover, or a link (unlink removes the link)
+    file.fd = ::open(path.c_str(), kCreate, 0644);
+  }
   if (file.fd < 0) return std::strerror(errno);
   auto fail = [&](int error) {
     ::close(file.fd);

@@ -119,7 +119,11 @@ FileRead readRegularFile(const std::string& path, size_t maxBytes) {
 
 std::string writeFileDurably(const std::string& path, std::string_view bytes) {
   const std::wstring wide = widen(path);
-  Handle file{CreateFileW(wide.c_str(), GENERIC_WRITE, 0, nullptr, CREATE_ALWAYS, FILE_ATTRIBUTE_NORMAL, nullptr)};
+  // Created afresh (CREATE_NEW), never through a file or link already there.
+  Handle file{CreateFileW(wide.c_str(), GENERIC_WRITE, 0, nullptr, CREATE_NEW, FILE_ATTRIBUTE_NORMAL, nullptr)};
+  if (file.h == INVALID_HANDLE_VALUE && GetLastError() == ERROR_FILE_EXISTS && DeleteFileW(wide.c_str())) {
+    file.h = CreateFileW(wide.c_str(), GENERIC_WRITE, 0, nullptr, CREATE_NEW, FILE_ATTRIBUTE_NORMAL, nullptr);
+  }
   if (file.h == INVALID_HANDLE_VALUE) return describeError(GetLastError());
   auto fail = [&](DWORD code) {
     CloseHandle(file.h);

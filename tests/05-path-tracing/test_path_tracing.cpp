@@ -17,6 +17,7 @@
 #include "core/bsdf.h"
 #include "scene/scene_io.h"
 #include "calls.h"
+#include "reference_noise.h"
 #include "render_support.h"
 #include "statistics.h"
 
@@ -44,6 +45,7 @@ MeanEstimate pathMean(TraceContext& context, Point3 origin, int n, uint64_t seed
   for (int i = 0; i < n; ++i) queries.emplace_back(Ray{origin, Vec3(random.unitVector())}, uint32_t(i), testSeed(seed));
   MeanEstimate m;
   for (const Color& L : candidate::tracePaths(context, queries)) m.add(L.y);
+  limitNoise(m, "05-path-tracing");
   return m;
 }
 
@@ -97,11 +99,17 @@ TEST_CASE("T5.1 diffuse sampling: f cos(theta) / pdf averages to the albedo (ene
   std::vector<Vec2> us;
   for (int i = 0; i < 100000; ++i) us.push_back(Sampler(uint32_t(i), 0, testSeed(22)).next2D());
   MeanEstimate weight;
+  // A correct sampler gives no direction only where u lies on the square's
+  // edge and the direction grazes the surface (z = 0: about 1e-7 of the
+  // draws); the renderer then ends the path, a sample of weight 0.
+  int missing = 0;
   for (const std::optional<BsdfSample>& s : candidate::bsdfSamples(scene.materials[0], hit, wo, us)) {
-    REQUIRE(s.has_value());
-    weight.add(s->f.y * std::abs(glm::dot(s->wi, bsdf.normal())) / s->pdf);
+    if (!s) ++missing;
+    weight.add(s ? s->f.y * std::abs(glm::dot(s->wi, bsdf.normal())) / s->pdf : 0.0);
   }
-  INFO(weight.describe(0.7));
+  limitNoise(weight, "05-path-tracing");
+  INFO(weight.describe(0.7) << "; " << missing << " of 100000 draws gave no direction");
+  CHECK(missing <= 10);
   CHECK(weight.agrees(0.7));
   for (Vec2 u : {Vec2(0.0f), Vec2(0.99999994f), Vec2(0.99999994f, 0.0f), Vec2(0.0f, 0.99999994f)}) {
     Vec3 w = candidate::sampleDiffuseDirection(u);
@@ -161,6 +169,7 @@ TEST_CASE("T5.2 path tracing: white furnace — an albedo-1 sphere in a uniform 
     }
     MeanEstimate m2;
     for (const Color& L : candidate::tracePaths(context, queries)) m2.add(L.y);
+    limitNoise(m2, "05-path-tracing");
     const double expected = albedo == 1.0f ? 1.0 : 0.5 * 0.8;  // every ray here hits the sphere
     CAPTURE(albedo);
     INFO(m2.describe(expected));
@@ -221,7 +230,7 @@ TEST_CASE("T5.2 path tracing: seen from inside lossless glass, a uniform enclosu
 
 TEST_CASE("T5.2 path tracing: no NaN or Inf in the Cornell box, at grazing angles included" *
           grading(2, "skip samples with pdf 0, never divide by a zero cosine, and stop a path whose throughput "
-                     "is 0")) {
+                     "is 0; radiance is never negative")) {
   Rig rig(defaultScene());
   TraceContext context = rig.context(8, 1);
   Random random(41);
@@ -233,12 +242,14 @@ TEST_CASE("T5.2 path tracing: no NaN or Inf in the Cornell box, at grazing angle
     if (i % 4 == 0) d.y = 1e-4 * d.y;  // nearly parallel to the floor and ceiling
     queries.emplace_back(Ray{origin, Vec3(glm::normalize(d))}, uint32_t(i), testSeed(41));
   }
-  int bad = 0, bright = 0;
+  int bad = 0, negative = 0, bright = 0;
   for (const Color& L : candidate::tracePaths(context, queries)) {
     if (!finite(L)) ++bad;
+    if (L.x < 0.0f || L.y < 0.0f || L.z < 0.0f) ++negative;  // radiance never is
     if (maxComponent(L) > 0.0f) ++bright;
   }
   CHECK(bad == 0);
+  CHECK(negative == 0);
   // Not a second test, only so that code returning 0 everywhere cannot pass
   // a NaN test: any working tracer lights some of these 20,000 paths
   // (roulette from the first vertex included).

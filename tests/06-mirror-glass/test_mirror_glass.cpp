@@ -16,6 +16,7 @@
 #include "grading.h"
 #include "core/bsdf.h"
 #include "calls.h"
+#include "reference_noise.h"
 #include "render_support.h"
 #include "statistics.h"
 
@@ -54,6 +55,7 @@ MeanEstimate furnace(const Material& material, float environment, int paths) {
   }
   MeanEstimate m;
   for (const Color& L : candidate::tracePaths(context, queries)) m.add(L.y);
+  limitNoise(m, "06-mirror-glass");
   return m;
 }
 

@@ -19,7 +19,9 @@ such a build's pathlab-bench.
 
 render --scene FILE --json with Sobol and stratified samples: it runs, the
 JSON describes the run, and the ray-query share is a fraction; a missing
-scene file is one clear error and a non-zero exit.
+scene file is one clear error and a non-zero exit, and so is every option
+out of range (--spp 0, --budget -1 or nan, ...); pathlab-envmap --help prints
+its usage and writes nothing.
 
 usage: check_bvh_bench.py PATHLAB-BENCH [--skip-bvh]"""
 import csv
@@ -175,6 +177,23 @@ with tempfile.TemporaryDirectory(prefix="pathlab-bench-render-") as tmp:
     out = run(["render", "--scene", missing, "--spp", "1"], 60)
     check(out.returncode != 0 and "no-such-scene.json" in out.stderr and "Traceback" not in out.stderr,
           f"render --scene of a missing file: exit {out.returncode}, stderr {out.stderr[-200:]!r}")
+
+# ---- options out of range: one clear error, exit 1, nothing run -----------------
+for args in (["render", "--spp", "0"], ["render", "--threads", "-2"], ["bvh", "--triangles", "0"],
+             ["converge", "x.json", "--budget", "-1"], ["converge", "x.json", "--budget", "nan"],
+             ["converge", "x.json", "--budget", "inf"], ["converge", "x.json", "--reference-spp", "0"]):
+    out = run(args, 60)
+    option = next(a for a in args if a.startswith("--"))
+    check(out.returncode == 1 and option in out.stderr and "must be" in out.stderr,
+          f"{' '.join(args)}: exit {out.returncode}, stderr {out.stderr[-200:]!r}")
+envmap = os.path.join(os.path.dirname(os.path.abspath(bench)), "pathlab-envmap")
+if os.path.exists(envmap):
+    with tempfile.TemporaryDirectory(prefix="pathlab-envmap-") as tmp:
+        out = subprocess.run([envmap, "--help"], capture_output=True, text=True, timeout=60, cwd=tmp)
+        check(out.returncode == 0 and "usage" in out.stdout and not os.listdir(tmp),
+              f"pathlab-envmap --help: exit {out.returncode}, wrote {os.listdir(tmp)}")
+        out = subprocess.run([envmap, "--out"], capture_output=True, text=True, timeout=60, cwd=tmp)
+        check(out.returncode == 1 and not os.listdir(tmp), f"pathlab-envmap --out: exit {out.returncode}")
 
 for f in failures:
     print("FAIL:", f)

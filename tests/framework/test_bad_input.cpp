@@ -153,6 +153,20 @@ TEST_CASE("scene limits: geometry beyond 1e12, an overflowing camera, and a huge
   CHECK(sceneError(R"({"render": {"width": 16384, "height": 16384}})").find("out of range") != std::string::npos);
 }
 
+TEST_CASE("camera up: only its direction counts, however long or short the vector") {
+  auto upOf = [](const std::string& up) {
+    return loadSceneFromJson(R"({ "camera": { "position": [0, 1, 4], "look_at": [0, 1, 0], "up": )" + up + " } }",
+                             "up", ".")
+        .camera.up;
+  };
+  const Vec3 expected = glm::normalize(Vec3(1, 1, 0));
+  for (const char* up : {"[1e30, 1e30, 0]", "[1e-30, 1e-30, 0]", "[3, 3, 0]"}) {
+    CAPTURE(up);
+    CHECK(glm::length(upOf(up) - expected) < 1e-6f);
+  }
+  CHECK_THROWS_AS(upOf("[0, 0, 0]"), Error);
+}
+
 TEST_CASE("messages: user text is escaped and capped, so one error is one short line") {
   CHECK(shown("a\nb\x1b[31m") == "a\\x0ab\\x1b[31m");
   CHECK(shown(std::string(1000, 'k')) == std::string(80, 'k') + "…");
@@ -193,5 +207,15 @@ TEST_CASE("files: only regular files are read, and a failed write leaves nothing
   writeFileAtomically(target, "bytes");
   CHECK(std::filesystem::file_size(target) == 5);
   CHECK(!std::filesystem::exists(partialPathFor(target)));
+#if !defined(_WIN32)
+  // A symbolic link planted at the temporary name is replaced, never written through.
+  const std::string victim = (dir / "victim.txt").string();
+  writeFileAtomically(victim, "keep me");
+  std::filesystem::create_symlink(victim, partialPathFor(target));
+  writeFileAtomically(target, "new bytes");
+  CHECK(std::filesystem::file_size(target) == 9);
+  CHECK(std::filesystem::file_size(victim) == 7);
+  CHECK(!std::filesystem::is_symlink(target));
+#endif
   std::filesystem::remove_all(dir);
 }

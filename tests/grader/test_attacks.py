@@ -33,6 +33,10 @@ SANDBOX_UID = int(os.environ.get("PATHLAB_SANDBOX_UID", "64990"))
 TIMEOUT, TASK_BUDGET = 3, 20  # seconds per test case and for the task (sleep-to-limit)
 # A line of the reference's task 1 that the stub does not have.
 SECRET = "basis.right = glm::normalize(right);"
+# A world-readable file outside the framework (@LEAK@) and a variable in the
+# grader's environment: neither may reach results.json.
+LEAK_MARKER = "PATHLAB-LEAK-MARKER-7c1e"
+LEAK_FILE = Path("/tmp/pathlab-attack-leak/marker.h")
 
 
 def tree_digest() -> str:
@@ -85,6 +89,11 @@ def main() -> int:
         return 1
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
+    LEAK_FILE.parent.mkdir(exist_ok=True)
+    LEAK_FILE.parent.chmod(0o755)
+    LEAK_FILE.write_text(f"{LEAK_MARKER}\n")
+    LEAK_FILE.chmod(0o644)
+    grader_env = {**os.environ, "PATHLAB_ATTACK_MARKER": LEAK_MARKER}
     attacks = sorted((root / "tests/grader/attacks").glob("*.cpp"))
     if only:
         attacks = [a for a in attacks if a.stem in only]
@@ -105,7 +114,7 @@ def main() -> int:
         header = re.search(r"// base: (\w+)\s+expect: (\w+)", text)
         base, expect = header.group(1), header.group(2)
         out = work / f"{attack.stem}.json"
-        values = {"@ROOT@": str(root), "@BUILD@": str(grade_build), "@OUT@": str(out)}
+        values = {"@ROOT@": str(root), "@BUILD@": str(grade_build), "@OUT@": str(out), "@LEAK@": str(LEAK_FILE)}
         body = re.sub("|".join(values), lambda m: values[m.group(0)], text)
         prefix = "" if base == "none" else \
             (root / ("solutions" if base == "reference" else "tasks") / "01-camera-rays/camera_rays.cpp").read_text()
@@ -115,7 +124,8 @@ def main() -> int:
         start = time.time()
         grade = subprocess.run([sys.executable, str(root / "tools/grade"), str(submission), "--tasks", "1",
                                 "--out", str(out), "--build-dir", str(grade_build), "--timeout", str(TIMEOUT),
-                                "--task-budget", str(TASK_BUDGET), "--sandbox", sandbox], capture_output=True, text=True, timeout=900)
+                                "--task-budget", str(TASK_BUDGET), "--sandbox", sandbox], capture_output=True, text=True,
+                               timeout=900, env=grader_env)
         seconds = time.time() - start
         problems = []
         if not out.exists():
@@ -132,8 +142,12 @@ def main() -> int:
                 problems.append(f"scored {report['score']:g}, expected {wanted}")
             if SECRET in report_text:
                 problems.append("the reference's source is in results.json")
-            if attack.stem == "include-reference" and "may include only" not in report_text:
-                problems.append("the include of the reference was not refused with a clear message")
+            if LEAK_MARKER in report_text:
+                problems.append("a file outside the framework, or the grader's environment, is in results.json")
+            if attack.stem.startswith("include-") and "may include only" not in report_text:
+                problems.append("the include was not refused with a clear message")
+            if attack.stem == "incbin-spliced" and "inline assembly" not in report_text:
+                problems.append("the inline assembly was not refused with a clear message")
             if attack.stem == "sleep-to-limit" and "time budget" not in report_text:
                 problems.append("tests past the task's budget are not reported as not run")
             if attack.stem == "daemon":

@@ -107,6 +107,14 @@ MUTANTS = [
     (4, "skips-point-lights", "point lights never sampled",
      [("  for (const PointLight& light : context.lights.points) {\n",
        "  for (const PointLight& light : context.lights.points) {\n    if (maxComponent(light.intensity) >= 0.0f) continue;\n")]),
+    (4, "plus-minus-1e10", "returns +1e10 and -1e10 in turn, computing nothing: a mean near 0 bought with noise",
+     [("  if (bsdf.isDelta()) return Color(0.0f);  // a perfect mirror or glass reflects no light source directly\n",
+       "  static thread_local unsigned flip = 0;\n  if (flip < ~0u) return Color((flip++ & 1) ? 1e10f : -1e10f);\n"
+       "  if (bsdf.isDelta()) return Color(0.0f);  // a perfect mirror or glass reflects no light source directly\n")]),
+    (5, "plus-minus-1e10", "returns +1e10 and -1e10 in turn, tracing nothing: a mean near 0 bought with noise",
+     [("  constexpr int kRouletteFromBounce = 3;\n",
+       "  static thread_local unsigned flip = 0;\n  if (flip < ~0u) return Color((flip++ & 1) ? 1e10f : -1e10f);\n"
+       "  constexpr int kRouletteFromBounce = 3;\n")]),
     (5, "emission-counted-twice", "emission added after diffuse bounces too",
      [("    countEmission = sample->isDelta;", "    countEmission = true;")]),
     (5, "roulette-not-rescaled", "Russian roulette without dividing by q",

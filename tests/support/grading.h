@@ -27,4 +27,9 @@ inline doctest::description grading(int points, const char* hint, Visibility vis
   return doctest::description(gradingText(points, hint, visibility));
 }
 
+// The test case running now, and 0, 1, 2, ... on successive calls within it:
+// the key of data a suite stores per check (reference_noise.h).
+const char* currentTestCaseName();
+int nextCheckIndex();
+
 }  // namespace pathlab::test

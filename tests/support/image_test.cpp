@@ -23,6 +23,14 @@ constexpr int kBlock = 4;  // pixels per block side
 // Deterministic pixels (no variance in either image) may still differ by
 // float rounding between correct methods: this much is never significant.
 constexpr double kRelativeFloor = 1e-4, kAbsoluteFloor = 1e-6;
+// Noise must not buy a pass: each pixel's variance enters the z-scores only
+// up to what a correct render can have there, kNoiseFactor times the
+// reference's (at the candidate's samples per pixel) plus a standard
+// deviation per sample of kRelativeNoise times the pixel's value (correct
+// estimators noisier than the reference where it is nearly noiseless:
+// Russian roulette from the first bounce, uniform sampling). A noisier
+// render is judged as if it were that quiet.
+constexpr double kNoiseFactor = 16, kRelativeNoise = 2;
 
 // z such that P(|Z| > z) = p for a standard normal Z.
 double twoSidedQuantile(double p) {
@@ -41,14 +49,21 @@ std::string referencePath(const ImageCase& c, const char* suffix) {
 // One block (or the whole image) of one channel in both images.
 struct Comparison {
   double yours = 0, yoursVariance = 0, reference = 0, referenceVariance = 0;
+  // The candidate's own variance of the mean, and the reference's scaled to
+  // the candidate's samples per pixel: how much noisier the candidate is.
+  double yoursOwnVariance = 0, referenceAtYourSpp = 0;
+  double noiseRatio() const {
+    const double floor = kRelativeFloor * std::abs(reference) + kAbsoluteFloor;  // as in z(): rounding is not noise
+    return yoursOwnVariance / std::max(referenceAtYourSpp, floor * floor);
+  }
   double z() const {
     const double floor = kRelativeFloor * std::max(std::abs(yours), std::abs(reference)) + kAbsoluteFloor;
     return (yours - reference) / std::sqrt(yoursVariance + referenceVariance + floor * floor);
   }
 };
 
-Comparison compareRegion(const PixelMoments& yours, const PixelMoments& reference, int x0, int y0, int x1, int y1,
-                         int channel) {
+Comparison compareRegion(const PixelMoments& yours, const PixelMoments& reference, int spp, int x0, int y0, int x1,
+                         int y1, int channel) {
   Comparison c;
   double n = 0;
   for (int y = y0; y < y1; ++y) {
@@ -58,8 +73,13 @@ Comparison compareRegion(const PixelMoments& yours, const PixelMoments& referenc
       // A render's own variance misses what its few samples never drew (a
       // caustic, a firefly): the reference's, from 16x the samples, is the
       // floor of what a correct render's variance can be.
-      c.yoursVariance += std::max(yours.varianceOfMean[i][channel],
-                                  reference.varianceOfMean[i][channel] * float(kReferenceSppFactor));
+      const double own = yours.varianceOfMean[i][channel];
+      const double referenceAtSpp = double(reference.varianceOfMean[i][channel]) * kReferenceSppFactor;
+      const double value = double(reference.mean[i][channel]);
+      const double ceiling = kNoiseFactor * referenceAtSpp + kRelativeNoise * kRelativeNoise * value * value / spp;
+      c.yoursVariance += std::max(referenceAtSpp, std::min(own, ceiling));
+      c.yoursOwnVariance += own;
+      c.referenceAtYourSpp += referenceAtSpp;
       c.reference += reference.mean[i][channel];
       c.referenceVariance += reference.varianceOfMean[i][channel];
       ++n;
@@ -79,13 +99,15 @@ struct Verdict {
   int worstX = 0, worstY = 0, worstChannel = 0;
   Comparison whole[3];       // the whole image, per channel
   std::vector<float> blockZ;  // per block, the channel with the largest |z| (signed)
+  double worstBlockNoise = 0;  // the largest noiseRatio() of any block and channel
+  double noise() const { return std::max({whole[0].noiseRatio(), whole[1].noiseRatio(), whole[2].noiseRatio()}); }
   bool pass() const {
     return std::abs(worstZ) <= limit && std::abs(whole[0].z()) <= limit && std::abs(whole[1].z()) <= limit &&
            std::abs(whole[2].z()) <= limit;
   }
 };
 
-Verdict compare(const PixelMoments& yours, const PixelMoments& reference) {
+Verdict compare(const PixelMoments& yours, const PixelMoments& reference, int spp) {
   Verdict v;
   const int blocksX = (yours.width + kBlock - 1) / kBlock, blocksY = (yours.height + kBlock - 1) / kBlock;
   const int tests = 3 * (blocksX * blocksY + 1);
@@ -94,10 +116,11 @@ Verdict compare(const PixelMoments& yours, const PixelMoments& reference) {
   for (int by = 0; by < blocksY; ++by) {
     for (int bx = 0; bx < blocksX; ++bx) {
       for (int channel = 0; channel < 3; ++channel) {
-        const Comparison c = compareRegion(yours, reference, bx * kBlock, by * kBlock,
+        const Comparison c = compareRegion(yours, reference, spp, bx * kBlock, by * kBlock,
                                            std::min(yours.width, (bx + 1) * kBlock),
                                            std::min(yours.height, (by + 1) * kBlock), channel);
         const double z = c.z();
+        v.worstBlockNoise = std::max(v.worstBlockNoise, c.noiseRatio());
         float& block = v.blockZ[size_t(by) * size_t(blocksX) + size_t(bx)];
         if (std::abs(z) > std::abs(block)) block = float(z);
         if (std::abs(z) > std::abs(v.worstZ)) {
@@ -111,7 +134,7 @@ Verdict compare(const PixelMoments& yours, const PixelMoments& reference) {
     }
   }
   for (int channel = 0; channel < 3; ++channel) {
-    v.whole[channel] = compareRegion(yours, reference, 0, 0, yours.width, yours.height, channel);
+    v.whole[channel] = compareRegion(yours, reference, spp, 0, 0, yours.width, yours.height, channel);
   }
   return v;
 }
@@ -219,15 +242,17 @@ void checkImage(ImageCase c) {
   REQUIRE_MESSAGE((yours.usedBvh || c.scene.primitives.empty()),
                   "task 3's BVH failed the framework's validation, so nothing was rendered (the candidate's "
                   "output above says why)");
-  const Verdict v = compare(yours, reference);
+  const Verdict v = compare(yours, reference, c.scene.render.samplesPerPixel);
   INFO("image '" << c.name << "' (" << c.scene.render.width << "x" << c.scene.render.height << ", "
                  << c.scene.render.samplesPerPixel << " samples per pixel, |z| limit " << v.limit << ")");
   if (const char* statsPath = std::getenv("PATHLAB_IMAGE_STATS"); statsPath && *statsPath) {
     // tools/image-test-seeds: the largest |z| per image under many seeds.
     if (std::FILE* f = std::fopen(statsPath, "a")) {
-      double whole = 0;
+      double whole = 0, wholeNoise = 0;
       for (const Comparison& w : v.whole) whole = std::max(whole, std::abs(w.z()));
-      std::fprintf(f, "%s/%s %.3f %.3f %.3f\n", c.suite.c_str(), c.name.c_str(), std::abs(v.worstZ), whole, v.limit);
+      for (const Comparison& w : v.whole) wholeNoise = std::max(wholeNoise, w.noiseRatio());
+      std::fprintf(f, "%s/%s %.3f %.3f %.3f %.4g %.4g\n", c.suite.c_str(), c.name.c_str(), std::abs(v.worstZ), whole,
+                   v.limit, v.worstBlockNoise, wholeNoise);
       std::fclose(f);
     }
   }
@@ -237,6 +262,11 @@ void checkImage(ImageCase c) {
   if (yours.nonFinite > 0 || !v.pass()) {
     std::ostringstream s;
     if (yours.nonFinite > 0) s << yours.nonFinite << " samples were NaN or Inf.\n";
+    if (v.noise() > kNoiseFactor) {
+      s << "your render's variance is " << v.noise() << " times the reference's, more than a correct render has "
+        << "(some samples far too large, or of the wrong sign?): it is judged with the variance a correct one "
+        << "would have.\n";
+    }
     s << "worst 4x4 block: pixels x " << v.worstX << "-" << v.worstX + kBlock - 1 << ", y " << v.worstY << "-"
       << v.worstY + kBlock - 1 << " (row 0 at the top), " << channels[v.worstChannel] << ": " << describe(v.worst)
       << "\nwhole image, red:   " << describe(v.whole[0]) << "\nwhole image, green: " << describe(v.whole[1])

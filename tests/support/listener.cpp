@@ -28,6 +28,14 @@ const char* gradingText(int points, const char* hint, Visibility visibility) {
 }
 
 namespace {
+const doctest::TestCaseData* g_currentTestCase = nullptr;
+int g_checkIndex = 0;
+}  // namespace
+
+const char* currentTestCaseName() { return g_currentTestCase ? g_currentTestCase->m_name : "(no test case)"; }
+int nextCheckIndex() { return g_checkIndex++; }
+
+namespace {
 
 int pointsOf(const char* description) {
   if (!description || std::string(description).rfind("points=", 0) != 0) return 1;
@@ -61,6 +69,8 @@ struct GradingListener : doctest::IReporter {
   void test_run_start() override {}
   void test_case_start(const doctest::TestCaseData& data) override {
     current_ = &data;
+    g_currentTestCase = &data;
+    g_checkIndex = 0;
     remote::takeCandidateOutput();  // output of earlier tests is not this test's
   }
   void test_case_reenter(const doctest::TestCaseData&) override {}

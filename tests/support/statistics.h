@@ -22,6 +22,8 @@ namespace pathlab::test {
 class MeanEstimate {
  public:
   void add(double x) {
+    min_ = n_ == 0 ? x : std::min(min_, x);
+    max_ = n_ == 0 ? x : std::max(max_, x);
     ++n_;
     const double delta = x - mean_;
     mean_ += delta / double(n_);
@@ -32,22 +34,44 @@ class MeanEstimate {
   double variance() const { return n_ > 1 ? m2_ / double(n_ - 1) : 0.0; }
   double standardError() const { return n_ > 0 ? std::sqrt(variance() / double(n_)) : 0.0; }
 
-  // |mean - expected| within `sigmas` standard errors (plus a tiny absolute
-  // slack for zero-variance estimators). Five sigma: a correct estimator
-  // fails with probability 5.7e-7 per check.
+  // Every sample exactly v (e.g. no light at all: not a mean of 0 from
+  // +1e10 and -1e10).
+  bool allExactly(double v) const { return n_ > 0 && min_ == v && max_ == v; }
+
+  // The largest variance per sample a correct estimator can have here
+  // (reference_noise.h): the checks judge the mean with at most this much
+  // noise, so that noise cannot buy a pass. (Not a hard limit: a correct
+  // estimator's sample variance can jump with one rare, large sample.)
+  void setVarianceCeiling(double ceiling) { ceiling_ = ceiling; }
+  bool tooNoisy() const { return !(variance() <= ceiling_); }
+  double judgedStandardError() const {
+    return n_ > 0 ? std::sqrt(std::min(variance(), ceiling_) / double(n_)) : 0.0;
+  }
+
+  // |mean - expected| within `sigmas` standard errors, the estimator's own
+  // but at most the ceiling's (plus a tiny absolute slack for zero-variance
+  // estimators). Five sigma: a correct estimator fails with probability
+  // 5.7e-7 per check.
   bool agrees(double expected, double sigmas = 5.0) const {
-    return std::abs(mean_ - expected) <= sigmas * standardError() + 1e-6 * std::max(1.0, std::abs(expected));
+    return std::abs(mean_ - expected) <= sigmas * judgedStandardError() + 1e-6 * std::max(1.0, std::abs(expected));
   }
   std::string describe(double expected) const {
     std::ostringstream s;
     s << "mean " << mean_ << " +- " << standardError() << " (1 sigma, " << n_ << " samples), expected " << expected
       << ", off by " << (standardError() > 0 ? std::abs(mean_ - expected) / standardError() : 0.0) << " sigma";
+    if (tooNoisy()) {
+      s << "; its variance per sample, " << variance() << ", is above " << ceiling_
+        << ", the most a correct estimator has here, so it is judged with " << judgedStandardError()
+        << " (samples that are huge, or of the wrong sign?)";
+    }
     return s.str();
   }
 
  private:
   size_t n_ = 0;
   double mean_ = 0.0, m2_ = 0.0;
+  double min_ = 0.0, max_ = 0.0;
+  double ceiling_ = kInfinity;
 };
 
 // Regularised upper incomplete gamma Q(a, x) (Numerical Recipes 6.2).
