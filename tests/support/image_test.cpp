@@ -24,13 +24,13 @@ constexpr int kBlock = 4;  // pixels per block side
 // float rounding between correct methods: this much is never significant.
 constexpr double kRelativeFloor = 1e-4, kAbsoluteFloor = 1e-6;
 // Noise must not buy a pass: each pixel's variance enters the z-scores only
-// up to what a correct render can have there, kNoiseFactor times the
+// up to what a correct render can have there, kImageNoiseFactor times the
 // reference's (at the candidate's samples per pixel) plus a standard
 // deviation per sample of kRelativeNoise times the pixel's value (correct
 // estimators noisier than the reference where it is nearly noiseless:
 // Russian roulette from the first bounce, uniform sampling). A noisier
 // render is judged as if it were that quiet.
-constexpr double kNoiseFactor = 16, kRelativeNoise = 2;
+constexpr double kImageNoiseFactor = 16, kRelativeNoise = 2;
 
 // z such that P(|Z| > z) = p for a standard normal Z.
 double twoSidedQuantile(double p) {
@@ -76,7 +76,7 @@ Comparison compareRegion(const PixelMoments& yours, const PixelMoments& referenc
       const double own = yours.varianceOfMean[i][channel];
       const double referenceAtSpp = double(reference.varianceOfMean[i][channel]) * kReferenceSppFactor;
       const double value = double(reference.mean[i][channel]);
-      const double ceiling = kNoiseFactor * referenceAtSpp + kRelativeNoise * kRelativeNoise * value * value / spp;
+      const double ceiling = kImageNoiseFactor * referenceAtSpp + kRelativeNoise * kRelativeNoise * value * value / spp;
       c.yoursVariance += std::max(referenceAtSpp, std::min(own, ceiling));
       c.yoursOwnVariance += own;
       c.referenceAtYourSpp += referenceAtSpp;
@@ -262,7 +262,7 @@ void checkImage(ImageCase c) {
   if (yours.nonFinite > 0 || !v.pass()) {
     std::ostringstream s;
     if (yours.nonFinite > 0) s << yours.nonFinite << " samples were NaN or Inf.\n";
-    if (v.noise() > kNoiseFactor) {
+    if (v.noise() > kImageNoiseFactor) {
       s << "your render's variance is " << v.noise() << " times the reference's, more than a correct render has "
         << "(some samples far too large, or of the wrong sign?): it is judged with the variance a correct one "
         << "would have.\n";
