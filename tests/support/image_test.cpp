@@ -53,7 +53,9 @@ struct Comparison {
   // the candidate's samples per pixel: how much noisier the candidate is.
   double yoursOwnVariance = 0, referenceAtYourSpp = 0;
   double noiseRatio() const {
-    const double floor = kRelativeFloor * std::abs(reference) + kAbsoluteFloor;  // as in z(): rounding is not noise
+    // z()'s rounding floor, from the reference's value alone: a huge mean of
+    // yours must not raise the floor its own noise is measured against.
+    const double floor = kRelativeFloor * std::abs(reference) + kAbsoluteFloor;
     return yoursOwnVariance / std::max(referenceAtYourSpp, floor * floor);
   }
   double z() const {
