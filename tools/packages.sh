@@ -10,10 +10,11 @@ pathlab_core=(build-essential cmake ninja-build pkg-config python3 libglm-dev li
 # fast_float (the OBJ reader's numbers: optional with GCC, needed with libc++; Ubuntu 22.04 lacks it).
 pathlab_build=("${pathlab_core[@]}" git libembree-dev libglfw3-dev libimgui-dev python3-matplotlib libfast-float-dev)
 # The tests: the GUI on a virtual display (Xvfb, Mesa's software OpenGL) looked
-# at with ImageMagick, and the grader's sandbox (bubblewrap).
-pathlab_test=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick bubblewrap)
-# Grading: the core and the sandbox (bubblewrap; util-linux for setpriv and prlimit).
-pathlab_grading=("${pathlab_core[@]}" bubblewrap util-linux)
+# at with ImageMagick, and the grader's sandbox (bubblewrap; libseccomp for its uid mode's pathlab-confine).
+pathlab_test=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick bubblewrap libseccomp-dev)
+# Grading: the core and the sandbox (bubblewrap; util-linux for setpriv, prlimit and ipcrm;
+# libseccomp for pathlab-confine, the uid mode's system-call filter).
+pathlab_grading=("${pathlab_core[@]}" bubblewrap util-linux libseccomp-dev)
 # The hardening jobs: clang and its sanitizer and libFuzzer runtime.
 pathlab_hardening=(clang libclang-rt-14-dev)
 # Clang with libc++ (the macOS toolchain; preset clang-libcxx).

@@ -3,11 +3,13 @@ the student's file and running the candidate — as an unprivileged uid inside
 bubblewrap, or with limits only where namespaces are missing. See Sandbox."""
 import os
 import re
+import selectors
 import shlex
 import shutil
 import signal
 import stat
 import subprocess
+import threading
 import time
 from pathlib import Path
 
@@ -15,27 +17,59 @@ SANDBOX_UID = int(os.environ.get("PATHLAB_SANDBOX_UID", "64990"))  # a uid nothi
 CANDIDATE_LIMITS = ["--nofile=256", "--fsize=67108864", "--core=0"]
 ADDRESS_SPACE = "--as=8589934592"  # 8 GB; not under sanitizers, whose shadow memory reserves terabytes
 CANDIDATE_PROCESSES = 64     # RLIMIT_NPROC of the sandbox uid: a fork bomb stops here
+# Memory of all the sandbox's processes together (resident, System V segments
+# included): one submission's, whatever it forks. PATHLAB_SANDBOX_MEMORY for a course's own.
+SUBMISSION_MEMORY = int(os.environ.get("PATHLAB_SANDBOX_MEMORY", str(8 << 30)))
+SHM_BYTES = 16 << 20         # bubblewrap's /dev/shm (its /tmp: Sandbox.command's tmp_bytes)
+OUTPUT_KEPT = 1 << 20        # bytes of a command's output run() holds from each end
 
 
-def run(command, cwd=None, timeout=None, env=None):
-    """Runs a command in its own session; returns (exit code or None on timeout, output)."""
+def run(command, cwd=None, timeout=None, env=None, keep=OUTPUT_KEPT):
+    """Runs a command in its own session; returns (exit code or None on timeout, output).
+    Of the output only the first and last `keep` bytes are held (a flood of
+    compiler diagnostics must not fill the grader's memory); the middle is
+    replaced by a line saying how much was left out."""
     try:
         p = subprocess.Popen(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, env=env,
                              start_new_session=True)
     except OSError as e:
         return 127, str(e)
+    head, tail, dropped = bytearray(), bytearray(), 0
+    deadline = None if timeout is None else time.monotonic() + timeout
+    timed_out = False
     try:
-        out, _ = p.communicate(timeout=timeout)
-        return p.returncode, out.decode("utf-8", "replace")
-    except subprocess.TimeoutExpired:
-        os.killpg(p.pid, signal.SIGKILL)
-        out, _ = p.communicate()
-        return None, out.decode("utf-8", "replace")
+        with selectors.DefaultSelector() as selector:
+            selector.register(p.stdout, selectors.EVENT_READ)
+            while True:
+                left = None if deadline is None else deadline - time.monotonic()
+                if left is not None and left <= 0:
+                    timed_out = True
+                    break
+                if not selector.select(left):
+                    continue
+                chunk = os.read(p.stdout.fileno(), 1 << 16)
+                if not chunk:
+                    break
+                room = keep - len(head)
+                head += chunk[:max(room, 0)]
+                tail += chunk[max(room, 0):]
+                if len(tail) > keep:
+                    dropped += len(tail) - keep
+                    del tail[:len(tail) - keep]
+        if not timed_out:
+            try:
+                p.wait(timeout=None if deadline is None else max(deadline - time.monotonic(), 0.01))
+            except subprocess.TimeoutExpired:
+                timed_out = True
     finally:
         try:
             os.killpg(p.pid, signal.SIGKILL)  # nothing of the session outlives it
         except ProcessLookupError:
             pass
+        p.wait()
+        p.stdout.close()
+    out = bytes(head) + (f"\n[... {dropped} bytes of output left out ...]\n".encode() if dropped else b"") + bytes(tail)
+    return (None if timed_out else p.returncode), out.decode("utf-8", "replace")
 
 
 def become_subreaper() -> None:
@@ -75,6 +109,8 @@ class Sandbox:
         self.root = os.geteuid() == 0
         self.mode = requested
         self.protected = []  # (path, original mode) to restore
+        self.denied = []     # world-writable folders closed to the sandbox uid: (path, mode or None for an ACL)
+        self.confine = None  # pathlab-confine, where the sandbox uid can run it (uid mode)
         if requested == "auto":
             if shutil.which("bwrap") and self._bwrap_works():
                 self.mode = "bwrap"
@@ -109,8 +145,11 @@ class Sandbox:
         sanitizer_options = [f"{name}={os.environ[name]}" for name in
                              ("TSAN_OPTIONS", "ASAN_OPTIONS", "UBSAN_OPTIONS", "LSAN_OPTIONS") if name in os.environ]
         if mode != "bwrap":
-            # A clean environment: the grader's variables are not the candidate's to read.
-            return prefix + ["env", "-i", "PATH=/usr/bin:/bin", "TMPDIR=/tmp", "HOME=/tmp", "LANG=C.UTF-8",
+            # No sockets, IPC or key rings (pathlab-confine: what bubblewrap's
+            # namespaces do), and a clean environment: the grader's variables
+            # are not the candidate's to read.
+            confine = [self.confine] if self.confine and mode == "uid" else []
+            return prefix + confine + ["/usr/bin/env", "-i", "PATH=/usr/bin:/bin", "TMPDIR=/tmp", "HOME=/tmp", "LANG=C.UTF-8",
                              *sanitizer_options] + argv  # (argv[0] is an absolute path: never an assignment)
         box = ["bwrap", "--unshare-all", "--die-with-parent", "--new-session",
                "--ro-bind", "/usr", "/usr", "--symlink", "usr/lib", "/lib", "--symlink", "usr/lib64", "/lib64",
@@ -118,7 +157,8 @@ class Sandbox:
                # Debian reaches some libraries (BLAS/LAPACK, which a build without
                # --as-needed links) through /etc/alternatives: links only, no secrets.
                "--ro-bind-try", "/etc/alternatives", "/etc/alternatives",
-               "--proc", "/proc", "--dev", "/dev", "--size", str(tmp_bytes), "--tmpfs", "/tmp",
+               "--proc", "/proc", "--dev", "/dev", "--size", str(SHM_BYTES), "--tmpfs", "/dev/shm",
+               "--size", str(tmp_bytes), "--tmpfs", "/tmp",
                "--clearenv", "--setenv", "PATH", "/usr/bin", "--setenv", "TMPDIR", "/tmp"]
         for name in ("TSAN_OPTIONS", "ASAN_OPTIONS", "UBSAN_OPTIONS", "LSAN_OPTIONS"):
             if name in os.environ:  # suppression files are outside the sandbox
@@ -127,7 +167,9 @@ class Sandbox:
             box += ["--ro-bind", str(scratch), "/sandbox"]
         if writable:
             box += ["--bind", str(writable), "/out"]
-        return prefix + box + ["--chdir", "/tmp", "--"] + argv
+        # The root and /dev are tmpfs too (RAM): read-only, so only the bounded
+        # /tmp and /dev/shm and the grader's /out take files.
+        return prefix + box + ["--remount-ro", "/dev", "--remount-ro", "/", "--chdir", "/tmp", "--"] + argv
 
     def path(self, scratch: Path, real: Path) -> str:
         """How a file under the read-only scratch folder is named inside the sandbox."""
@@ -151,14 +193,6 @@ class Sandbox:
                 self.protected.append((path, mode))
                 os.chmod(path, 0o700)
 
-    def restore(self) -> None:
-        for path, mode in reversed(self.protected):
-            try:
-                os.chmod(path, mode)
-            except OSError:
-                pass
-        self.protected = []
-
     def can_read(self, path: Path) -> bool:
         """Whether code in the sandbox can read `path` (the isolation check)."""
         code, _ = run(self.command(["/bin/sh", "-c", f"cat {shlex.quote(str(path))} > /dev/null"], scratch=None),
@@ -166,27 +200,209 @@ class Sandbox:
         return code == 0
 
     def clean_up(self, stale: bool = False) -> None:
-        """Kills every process of the sandbox uid and removes its files from the shared temporary folders.
-        stale: also under bubblewrap, whose own /tmp vanishes with it but whose output folders live in
-        the grader's scratch: what a grade killed before its cleanup left behind."""
+        """Kills every process of the sandbox uid and removes what it left in the
+        shared places: files in the world-writable folders, System V IPC objects.
+        stale: also under bubblewrap, whose own /tmp vanishes with it but whose
+        output folders live in the grader's scratch: what a grade killed before
+        its cleanup left behind."""
         reap_orphans()
         if not (self.root and self.mode in ("bwrap", "uid")):
             return
-        for _ in range(20):
-            alive = []
-            for pid in os.listdir("/proc"):
-                if not pid.isdigit():
-                    continue
-                try:
-                    if os.stat(f"/proc/{pid}").st_uid == SANDBOX_UID:
-                        alive.append(int(pid))
-                        os.kill(int(pid), signal.SIGKILL)
-                except (OSError, ProcessLookupError):
-                    pass
-            reap_orphans()
-            if not alive:
-                break
-            time.sleep(0.05)
+        kill_every_process_of_sandbox()
+        reap_orphans()
         if self.mode == "uid" or stale:
-            for folder in ("/tmp", "/var/tmp", "/dev/shm"):
+            for folder in world_writable_folders():
                 run(["find", folder, "-xdev", "-uid", str(SANDBOX_UID), "-delete"], timeout=60)
+            remove_ipc_objects()
+
+    def deny_shared_folders(self) -> None:
+        """uid mode: the world-writable folders (/tmp, /dev/shm, /run/lock, ...)
+        take no files from the sandbox uid while grading: a POSIX ACL entry for
+        that uid alone, search only (it still reaches its own scratch folder
+        under /tmp). RAM-backed ones would hold memory no limit counts, and any
+        of them could carry data to the next submission. Where a file system
+        has no ACLs the folder loses its write bit for others instead."""
+        if not (self.root and self.mode == "uid"):
+            return
+        for folder in world_writable_folders():
+            path = Path(folder)
+            mode = stat.S_IMODE(path.stat().st_mode)
+            try:
+                os.getxattr(folder, ACL_XATTR)
+                has_acl = True
+            except OSError:
+                has_acl = False
+            try:
+                if has_acl:
+                    raise OSError("the folder has an ACL of its own")
+                os.setxattr(folder, ACL_XATTR, search_only_acl(mode), os.XATTR_CREATE)
+                self.denied.append((path, None))
+            except OSError:
+                os.chmod(path, mode & ~0o002)
+                self.denied.append((path, mode))
+
+    def restore(self) -> None:
+        for path, mode in reversed(self.protected):
+            try:
+                os.chmod(path, mode)
+            except OSError:
+                pass
+        self.protected = []
+        for path, mode in reversed(self.denied):
+            try:
+                if mode is None:
+                    os.removexattr(path, ACL_XATTR)
+                else:
+                    os.chmod(path, mode)
+            except OSError:
+                pass
+        self.denied = []
+
+
+# ------------------------------------------------------------ the sandbox uid's traces
+
+ACL_XATTR = "system.posix_acl_access"
+
+
+def search_only_acl(mode: int) -> bytes:
+    """A POSIX access ACL (the kernel's xattr form) keeping `mode` for everyone
+    but SANDBOX_UID, which may only pass through (--x)."""
+    import struct
+    undefined = 0xFFFFFFFF
+    group = (mode >> 3) & 7
+    entries = [(0x01, (mode >> 6) & 7, undefined),  # owner
+               (0x02, 1, SANDBOX_UID),               # the sandbox uid: search only
+               (0x04, group, undefined),             # owning group
+               (0x10, group | 1, undefined),         # mask (lets the entry above through)
+               (0x20, mode & 7, undefined)]          # others
+    return struct.pack("<I", 2) + b"".join(struct.pack("<HHI", *e) for e in entries)
+
+
+_world_writable = None
+
+
+def world_writable_folders():
+    """Folders anyone may write to, four levels deep from / (found once per
+    grade: /tmp, /var/tmp, /dev/shm, /run/lock, /dev/mqueue and their like)."""
+    global _world_writable
+    if _world_writable is None:
+        code, out = run(["find", "/", "-maxdepth", "4", "(", "-path", "/proc", "-o", "-path", "/sys", ")", "-prune",
+                         "-o", "-type", "d", "-perm", "-0002", "-print"], timeout=60)
+        found = {line for line in out.splitlines() if line.startswith("/")}
+        _world_writable = sorted(found | {f for f in ("/tmp", "/var/tmp", "/dev/shm", "/run/lock", "/dev/mqueue")
+                                          if os.path.isdir(f)})
+    return _world_writable
+
+
+def sandbox_processes(include_zombies: bool = False):
+    """Pids of the sandbox uid's processes (zombies hold no memory: left out by default)."""
+    found = []
+    for pid in os.listdir("/proc"):
+        if not pid.isdigit():
+            continue
+        try:
+            if os.stat(f"/proc/{pid}").st_uid != SANDBOX_UID:
+                continue
+            if not include_zombies:
+                with open(f"/proc/{pid}/stat", "rb") as f:
+                    if f.read().rsplit(b")", 1)[1].split()[0] == b"Z":
+                        continue
+            found.append(int(pid))
+        except (OSError, IndexError):
+            pass
+    return found
+
+
+def kill_every_process_of_sandbox() -> None:
+    """Kills all of the sandbox uid's processes at once: kill(-1, SIGKILL) sent
+    *as that uid* reaches every process it may signal in one pass the kernel
+    makes with forking locked out, so a fork chain cannot outrun it (a loop
+    over /proc can be outrun). Repeated until none is left but zombies."""
+    for _ in range(200):
+        if not sandbox_processes():
+            return
+        pid = os.fork()
+        if pid == 0:  # no exec: the sandbox uid's process limit never applies
+            try:
+                os.setgroups([])
+                os.setresgid(SANDBOX_UID, SANDBOX_UID, SANDBOX_UID)
+                os.setresuid(SANDBOX_UID, SANDBOX_UID, SANDBOX_UID)
+                os.kill(-1, signal.SIGKILL)
+            finally:
+                os._exit(0)
+        os.waitpid(pid, 0)
+        time.sleep(0.01)  # processes in the kernel finish dying
+
+
+def ipc_objects():
+    """(kind flag for ipcrm, id, resident bytes) of the sandbox uid's System V objects."""
+    found = []
+    for kind, flag in (("shm", "-m"), ("sem", "-s"), ("msg", "-q")):
+        try:
+            lines = Path(f"/proc/sysvipc/{kind}").read_text().splitlines()
+        except OSError:
+            continue
+        if not lines:
+            continue
+        columns = lines[0].split()
+        for line in lines[1:]:
+            fields = dict(zip(columns, line.split()))
+            if fields.get("uid") == str(SANDBOX_UID) or fields.get("cuid") == str(SANDBOX_UID):
+                found.append((flag, fields.get("shmid") or fields.get("semid") or fields.get("msqid"),
+                              int(fields.get("rss", 0))))
+    return found
+
+
+def remove_ipc_objects() -> None:
+    for flag, ident, _ in ipc_objects():
+        run(["ipcrm", flag, ident], timeout=20)
+
+
+def sandbox_memory() -> int:
+    """Bytes the sandbox uid holds in memory now: its processes' resident
+    pages and its System V shared memory."""
+    page = os.sysconf("SC_PAGE_SIZE")
+    total = 0
+    for pid in sandbox_processes():
+        try:
+            with open(f"/proc/{pid}/statm", "rb") as f:
+                total += int(f.read().split()[1]) * page
+        except (OSError, IndexError, ValueError):
+            pass
+    return total + sum(rss for _, _, rss in ipc_objects())
+
+
+class MemoryWatch:
+    """While a sandboxed command runs: every 50 ms, the memory of all the
+    sandbox's processes together; over SUBMISSION_MEMORY, every one is killed
+    and `exceeded` holds what was seen. (RLIMIT_AS bounds one process; this
+    bounds the submission. A poll, not a cgroup — Gradescope's container
+    offers none — so a burst can overshoot by what 50 ms of writing adds.)"""
+
+    def __init__(self, active: bool, limit: int = SUBMISSION_MEMORY):
+        self.active, self.limit = active, limit
+        self.exceeded = 0
+        self._stop = threading.Event()
+        self._thread = None
+
+    def __enter__(self):
+        if self.active:
+            self._thread = threading.Thread(target=self._watch, daemon=True)
+            self._thread.start()
+        return self
+
+    def _watch(self):
+        while not self._stop.wait(0.05):
+            used = sandbox_memory()
+            if used > self.limit:
+                self.exceeded = max(self.exceeded, used)
+                kill_every_process_of_sandbox()
+
+    def __exit__(self, *_):
+        self._stop.set()
+        if self._thread:
+            self._thread.join()
+
+    def message(self) -> str:
+        return (f"the submission's processes together used {self.exceeded / 2**30:.1f} GB of memory, over the "
+                f"limit of {self.limit / 2**30:.1f} GB: all were stopped" if self.exceeded else "")

@@ -40,40 +40,73 @@ size_t lineOfKey(std::string_view text, size_t n) {
   return line;
 }
 
+// The checks no DOM parser makes, in one SAX pass before the DOM is built:
+// nesting depth and keys given twice. (Not nlohmann's parser callback: its
+// DOM builder rescans the enclosing array at every object's end, so a scene
+// of 100,000 lights took seconds and 10^6 never finished loading.)
+class SceneChecks final : public nlohmann::json_sax<Json> {
+ public:
+  SceneChecks(std::string_view text, const std::string& name) : text_(text), name_(name) {}
+
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override {
+    enter();
+    keysOfOpenObjects_.emplace_back();
+    return true;
+  }
+  bool end_object() override {
+    keysOfOpenObjects_.pop_back();
+    --depth_;
+    return true;
+  }
+  bool start_array(std::size_t) override {
+    enter();
+    return true;
+  }
+  bool end_array() override {
+    --depth_;
+    return true;
+  }
+  bool key(string_t& key) override {
+    const size_t ordinal = keyCount_++;
+    auto [it, inserted] = keysOfOpenObjects_.back().try_emplace(key, ordinal);
+    if (!inserted) {
+      throw Error(name_ + ":" + std::to_string(lineOfKey(text_, ordinal)) + ": key " + inQuotes(it->first) +
+                  " is given twice in one object (first on line " + std::to_string(lineOfKey(text_, it->second)) + ")");
+    }
+    return true;
+  }
+  // The DOM parse that follows reports the error, with its position.
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+
+ private:
+  void enter() {
+    if (depth_ >= kMaxDepth) {
+      throw Error(name_ + ": nesting deeper than " + std::to_string(kMaxDepth) + " levels (a scene needs 5)");
+    }
+    ++depth_;
+  }
+
+  std::string_view text_;
+  const std::string& name_;
+  int depth_ = 0;
+  size_t keyCount_ = 0;
+  std::vector<std::unordered_map<std::string, size_t>> keysOfOpenObjects_;
+};
+
 }  // namespace
 
 Json parse(std::string_view text, const std::string& name) {
-  std::vector<std::unordered_map<std::string, size_t>> keysOfOpenObjects;
-  size_t keyCount = 0;
-  auto check = [&](int depth, Json::parse_event_t event, Json& parsed) {
-    switch (event) {
-      case Json::parse_event_t::object_start:
-      case Json::parse_event_t::array_start:
-        if (depth >= kMaxDepth) {
-          throw Error(name + ": nesting deeper than " + std::to_string(kMaxDepth) + " levels (a scene needs 5)");
-        }
-        if (event == Json::parse_event_t::object_start) keysOfOpenObjects.emplace_back();
-        break;
-      case Json::parse_event_t::object_end:
-        keysOfOpenObjects.pop_back();
-        break;
-      case Json::parse_event_t::key: {
-        const size_t ordinal = keyCount++;
-        auto [it, inserted] = keysOfOpenObjects.back().try_emplace(parsed.get<std::string>(), ordinal);
-        if (!inserted) {
-          throw Error(name + ":" + std::to_string(lineOfKey(text, ordinal)) + ": key " + inQuotes(it->first) +
-                      " is given twice in one object (first on line " + std::to_string(lineOfKey(text, it->second)) +
-                      ")");
-        }
-        break;
-      }
-      default:
-        break;
-    }
-    return true;
-  };
   try {
-    return Json::parse(text.begin(), text.end(), check);
+    SceneChecks checks(text, name);
+    Json::sax_parse(text.begin(), text.end(), &checks);
+    return Json::parse(text.begin(), text.end());
   } catch (const Json::out_of_range& e) {
     // e.g. a number literal too large for a double ("1e999")
     std::string what = e.what();

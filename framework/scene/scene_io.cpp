@@ -30,6 +30,10 @@ namespace fs = std::filesystem;
 // Limits that keep a typo from asking for terabytes (image size: scene.h).
 constexpr int kMaxSpp = 1 << 20;
 constexpr int kMaxDepth = 1024;
+// All meshes of a scene together (each procedural one is capped at 8 M):
+// 16 M triangles, about 1 GB with their tree. One budget for the scene, or
+// eight meshes at their own caps would take 3 GB before anything failed.
+constexpr size_t kMaxSceneTriangles = size_t(1) << 24;
 
 
 // ---- camera and render settings --------------------------------------------
@@ -276,6 +280,7 @@ Scene parseScene(const Source& source, const Json& root) {
 
   if (top.has("meshes")) {
     const Json& meshes = top.array("meshes");
+    size_t sceneTriangles = 0;
     for (size_t i = 0; i < meshes.size(); ++i) {
       Object o(source, meshes[i], indexed("meshes", i),
                {"name", "obj", "positions", "triangles", "normals", "quad", "bumpy_sphere", "coil", "material",
@@ -311,6 +316,12 @@ Scene parseScene(const Source& source, const Json& root) {
       if (!hasArea(mesh)) o.fail(indexed("meshes", i), "every triangle of the mesh has zero area");
       mesh.name = o.string("name", mesh.name.empty() ? indexed("meshes", i) : mesh.name);
       mesh.material = materialFor(o);
+      sceneTriangles += mesh.triangles.size();
+      if (sceneTriangles > kMaxSceneTriangles) {
+        o.fail(indexed("meshes", i), "the scene's meshes have more than " + std::to_string(kMaxSceneTriangles) +
+                                         " triangles together (" + std::to_string(sceneTriangles) +
+                                         " with this one): the most one scene may have");
+      }
       scene.meshes.push_back(std::move(mesh));
     }
   }
@@ -346,10 +357,14 @@ Scene parseScene(const Source& source, const Json& root) {
       std::string file = o.string("image", "");
       fs::path path = fs::path(file).is_absolute() ? fs::path(file) : source.baseDir / file;
       env.imagePath = path.string();
+      bool hasAlpha = false;
       try {
-        env.image = readImage(env.imagePath);
+        env.image = readImage(env.imagePath, &hasAlpha);
       } catch (const Error& e) {
         o.fail(o.field("image"), e.what());
+      }
+      if (hasAlpha) {  // a sky has no transparency: said, so alpha 0 cannot look like a bug in the renderer
+        printWarning(env.imagePath + ": the alpha channel is ignored; the colours are used as stored");
       }
       if (const size_t invalid = zeroInvalidRadiance(env.image)) {
         printWarning(env.imagePath + ": " + std::to_string(invalid) +

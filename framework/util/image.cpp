@@ -115,7 +115,7 @@ void writeImage(const Image& image, const std::string& finalPath, const ImageMet
   writeFileAtomically(finalPath, bytes);
 }
 
-Image readImage(const std::string& path) {
+Image readImage(const std::string& path, bool* hasAlpha) {
   const size_t fileBytes = requireRegularFile(path, "image file");
   const QuietStderr quiet;  // until the function returns or throws (the message is printed later)
   // Only the reader the extension names: given a whole file name,
@@ -128,6 +128,7 @@ Image readImage(const std::string& path) {
   const std::unique_ptr<CodecReader, void (*)(CodecReader*)> reader(
       codecOpen(path.c_str(), format.empty() ? path.c_str() : format.c_str(), &header, error), codecClose);
   if (!reader) throw Error(shown(path, 200) + ": " + oneLine(error));
+  if (hasAlpha) *hasAlpha = header.hasAlpha != 0;
   if (header.width <= 0 || header.height <= 0 || header.channels <= 0) {
     throw Error(shown(path, 200) + ": image has no pixels");
   }

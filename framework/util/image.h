@@ -35,8 +35,10 @@ bool isWritableImagePath(const std::string& path);
 void writeImage(const Image& image, const std::string& path, const ImageMetadata& metadata = {});
 
 // Reads any format OpenImageIO knows into linear RGB (8-bit files are
-// decoded from sRGB). Throws pathlab::Error naming the path on failure.
-Image readImage(const std::string& path);
+// decoded from sRGB). An alpha channel is dropped, the colours kept as
+// stored; `hasAlpha` says whether there was one. Throws pathlab::Error
+// naming the path on failure.
+Image readImage(const std::string& path, bool* hasAlpha = nullptr);
 
 // The image as 8-bit sRGB bytes, 3 (RGB) or 4 (RGBA, alpha 255) per pixel,
 // after multiplying by `scale` (exposure) and clamping, as PNGs store it.

@@ -83,8 +83,11 @@ CodecReader* codecOpen(const char* path, const char* format, CodecHeader* header
       setError(error, "cannot read image: " + OIIO::geterror());
       return nullptr;
     }
-    OIIO::ImageSpec openedSpec;
-    if (!reader->input->open(path, openedSpec)) {
+    OIIO::ImageSpec openedSpec, config;
+    // Colours as the file stores them: OpenImageIO would multiply a PNG's
+    // or TIFF's colours by alpha, and alpha 0 would turn them black.
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    if (!reader->input->open(path, openedSpec, config)) {
       setError(error, "cannot read image as a ." + std::string(format) + " file: " + reader->input->geterror());
       return nullptr;
     }
@@ -92,6 +95,7 @@ CodecReader* codecOpen(const char* path, const char* format, CodecHeader* header
     header->width = spec.width;
     header->height = spec.height;
     header->channels = spec.nchannels;
+    header->hasAlpha = spec.alpha_channel >= 0 ? 1 : 0;
     header->bytesPerChannel = int(spec.format.size());
     header->isInteger8or16 = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
                              spec.format.basetype == OIIO::TypeDesc::UINT16;

@@ -33,6 +33,7 @@ struct CodecHeader {
   int width, height, channels;
   int bytesPerChannel;  // as stored in the file
   int isInteger8or16;   // 8- or 16-bit integer channels: sRGB-encoded
+  int hasAlpha;         // an alpha channel (colours are read as stored, never multiplied by it)
 };
 
 typedef struct CodecReader CodecReader;

@@ -240,8 +240,13 @@ if task_works 1 && task_works 2 && task_works 3 && task_works 4; then
     out=$("$pathlab" -q -s 1 -m 1 -d 16x12 -o "$work/sky2.exr" "$g/sky-sphere.json" --ref "$g/sky-expected.pfm" 2>&1) &&
     [[ $out =~ RMSE\ ([0-9.e+-]+), ]] && awk -v e="${BASH_REMATCH[1]}" 'BEGIN { exit !(e < 1e-4) }' && pass ||
     fail "a sphere of radius 1e9 around the camera, lit from its centre, is not 0.5/pi everywhere: $out $(cat "$work/err.txt")"
+  out=$("$pathlab" -q -s 1 -m 1 -d 16x12 -o "$work/transparent.exr" "$g/transparent-sky.json" \
+          --ref "$g/transparent-sky-expected.pfm" 2>&1) &&
+    [[ $out =~ "alpha channel is ignored" && $out =~ RMSE\ ([0-9.e+-]+), ]] &&
+    awk -v e="${BASH_REMATCH[1]}" 'BEGIN { exit !(e < 1e-4) }' && pass ||
+    fail "an RGBA environment map with alpha 0 is not its colours, with a warning: $out"
 else
-  echo "skipped: the sphere of radius 1e9 (its image needs tasks 1-4 done)"
+  echo "skipped: the sphere of radius 1e9 and the transparent sky (their images need tasks 1-4 done)"
 fi
 "$pathlab" -q -s 1 -d 16x12 -o "$work/texels.exr" "$g/bad-texels.json" 2>"$work/err.txt"
 rc=$?
@@ -250,6 +255,8 @@ grep -vE '^task [0-9]+( not implemented:|: )' "$work/err.txt" > "$work/errors.tx
   fail "an environment map with NaN, infinite and negative texels: exit $rc, $(cat "$work/err.txt")"
 timeout -s KILL 60 prlimit --cpu=10:11 "$pathlab" -q -s 1 -d 16x12 -o "$work/disc.png" "$g/huge-convex-polygon.json" 2>"$work/err.txt" && pass ||
   fail "a convex polygon of 150,000 vertices: exit $?, $(cat "$work/err.txt")"
+timeout -s KILL 120 prlimit --cpu=30:31 "$pathlab" -q -s 1 -m 1 -d 2x2 -o "$work/lights.png" "$g/million-lights.json" \
+  2>"$work/err.txt" && pass || fail "a scene of a million point lights does not load and render in 30 s of CPU: exit $?, $(cat "$work/err.txt")"
 "$pathlab" -q -s 1 -d 1x1 -o "$work/one.png" 2>"$work/err.txt" && [[ -s $work/one.png ]] && pass || fail "a 1x1 image: $(cat "$work/err.txt")"
 
 echo "$passed passed, $failed failed"

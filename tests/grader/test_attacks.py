@@ -3,12 +3,19 @@
 Each attack is a task-1 file: the stub (or the reference, for an attack
 that also does the work honestly) with the attack appended, which knows the
 real paths of the repository, the build and results.json (@ROOT@, @BUILD@,
-@OUT@: the worst case). Every attack must score exactly what its honest work
-earns (0 on the stub, full marks on the reference), and after each grade:
-the reference never appears in results.json, the repository's tracked files
-and the judge are unchanged, no process of the sandbox is left, nothing of
-the sandbox's is left in the shared temporary folders, results.json is not
-rewritten later, and the grade ended within its budget.
+@OUT@: the worst case) and of listeners this script keeps open (@PORT@ on
+127.0.0.1, the abstract Unix socket @ABSTRACT@). Every attack must score
+exactly what its honest work earns (0 on the stub, full marks on the
+reference), and after each grade: the reference never appears in
+results.json, the repository's tracked files and the judge are unchanged, no
+process of the sandbox is left (looked at twice, a second apart), nothing of
+the sandbox's is left in any world-writable folder or as a System V IPC
+object, nothing reached the listeners, results.json is not rewritten later,
+and the grade ended within its budget. While it runs, memory is sampled every
+20 ms: the sandbox's (its processes and RAM-backed files) must stay within
+the submission's limit (MEMORY_LIMIT here) plus what one poll of the
+grader's watch can miss, and the grader's side (grader, judge, compiler
+driver: everything not the sandbox's) within GRADER_MEMORY.
 
 usage: test_attacks.py REPO_ROOT BUILD_DIR [--sandbox bwrap|uid] [ATTACK ...]"""
 import hashlib
@@ -16,8 +23,10 @@ import json
 import os
 import re
 import shutil
+import socket
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -31,6 +40,9 @@ grade_build = build / "grade-build"
 work = build / f"attacks-{sandbox}"
 SANDBOX_UID = int(os.environ.get("PATHLAB_SANDBOX_UID", "64990"))
 TIMEOUT, TASK_BUDGET = 3, 20  # seconds per test case and for the task (sleep-to-limit)
+MEMORY_LIMIT = 1 << 30        # the submission's memory limit in this suite (PATHLAB_SANDBOX_MEMORY)
+MEMORY_SLACK = 512 << 20      # what 50 ms between the grader's polls may add, with margin
+GRADER_MEMORY = 1 << 30       # the grader's side: a linker and a judge fit in far less
 # A line of the reference's task 1 that the stub does not have.
 SECRET = "basis.right = glm::normalize(right);"
 # A world-readable file outside the framework (@LEAK@) and a variable in the
@@ -67,9 +79,16 @@ def sandbox_processes():
     return found
 
 
-def sandbox_files():
+def world_writable_folders():
+    """Found here, independently of the grader's own list."""
+    out = subprocess.run(["find", "/", "-maxdepth", "5", "(", "-path", "/proc", "-o", "-path", "/sys", ")", "-prune",
+                          "-o", "-type", "d", "-perm", "-0002", "-print"], capture_output=True, text=True).stdout
+    return sorted(set(out.split()) | {"/tmp", "/var/tmp", "/dev/shm"})
+
+
+def sandbox_files(folders):
     found = []
-    for folder in ("/tmp", "/var/tmp", "/dev/shm"):
+    for folder in folders:
         for dirpath, dirnames, filenames in os.walk(folder):
             for name in dirnames + filenames:
                 try:
@@ -78,6 +97,86 @@ def sandbox_files():
                 except OSError:
                     pass
     return found
+
+
+def sandbox_ipc():
+    """The sandbox uid's System V IPC objects, as ipcs lists them."""
+    found = []
+    for kind in ("-m", "-s", "-q"):
+        out = subprocess.run(["ipcs", kind, "-c"], capture_output=True, text=True).stdout
+        found += [line for line in out.splitlines() if re.search(rf"\s{SANDBOX_UID}\s", line)]
+    return found
+
+
+def shared_memory_bytes() -> int:
+    """RAM held by tmpfs files and shared memory, system-wide (/proc/meminfo Shmem)."""
+    for line in Path("/proc/meminfo").read_text().splitlines():
+        if line.startswith("Shmem:"):
+            return int(line.split()[1]) * 1024
+    return 0
+
+
+class MemorySampler(threading.Thread):
+    """Peak memory of one grade, every 20 ms: the sandbox uid's processes plus
+    what tmpfs and shared memory grew by (the sandbox's files in RAM), and the
+    grade's other processes (the grader's process tree minus the sandbox)."""
+
+    def __init__(self, grader_pid: int):
+        super().__init__(daemon=True)
+        self.grader_pid, self.stop = grader_pid, threading.Event()
+        self.baseline = shared_memory_bytes()
+        self.sandbox_peak = self.grader_peak = 0
+
+    def run(self):
+        page = os.sysconf("SC_PAGE_SIZE")
+        while not self.stop.wait(0.02):
+            parent, rss, uid = {}, {}, {}
+            for pid in os.listdir("/proc"):
+                try:
+                    if not pid.isdigit():
+                        continue
+                    stat = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+                    parent[int(pid)] = int(stat[1])
+                    rss[int(pid)] = int(stat[21]) * page
+                    uid[int(pid)] = os.stat(f"/proc/{pid}").st_uid
+                except (OSError, IndexError, ValueError):
+                    pass
+            def in_grade(pid):
+                for _ in range(64):
+                    if pid == self.grader_pid:
+                        return True
+                    pid = parent.get(pid, 0)
+                    if pid <= 1:
+                        return False
+                return False
+            sandbox = sum(r for p, r in rss.items() if uid.get(p) == SANDBOX_UID)
+            grader = sum(r for p, r in rss.items() if uid.get(p) != SANDBOX_UID and in_grade(p))
+            self.sandbox_peak = max(self.sandbox_peak, sandbox + max(0, shared_memory_bytes() - self.baseline))
+            self.grader_peak = max(self.grader_peak, grader)
+
+
+class Listener(threading.Thread):
+    """Accepts connections on a socket and keeps what they send."""
+
+    def __init__(self, family, address):
+        super().__init__(daemon=True)
+        self.server = socket.socket(family, socket.SOCK_STREAM)
+        self.server.bind(address)
+        self.server.listen(8)
+        self.received = []
+
+    def run(self):
+        while True:
+            try:
+                connection, _ = self.server.accept()
+            except OSError:
+                return
+            with connection:
+                connection.settimeout(2)
+                try:
+                    self.received.append(connection.recv(1 << 16) or b"(connected)")
+                except OSError:
+                    self.received.append(b"(connected)")
 
 
 def main() -> int:
@@ -93,7 +192,13 @@ def main() -> int:
     LEAK_FILE.parent.chmod(0o755)
     LEAK_FILE.write_text(f"{LEAK_MARKER}\n")
     LEAK_FILE.chmod(0o644)
-    grader_env = {**os.environ, "PATHLAB_ATTACK_MARKER": LEAK_MARKER}
+    grader_env = {**os.environ, "PATHLAB_ATTACK_MARKER": LEAK_MARKER, "PATHLAB_SANDBOX_MEMORY": str(MEMORY_LIMIT)}
+    tcp = Listener(socket.AF_INET, ("127.0.0.1", 0))
+    abstract_name = f"pathlab-attack-{os.getpid()}"
+    local = Listener(socket.AF_UNIX, "\0" + abstract_name)
+    tcp.start()
+    local.start()
+    folders = world_writable_folders()
     attacks = sorted((root / "tests/grader/attacks").glob("*.cpp"))
     if only:
         attacks = [a for a in attacks if a.stem in only]
@@ -114,7 +219,8 @@ def main() -> int:
         header = re.search(r"// base: (\w+)\s+expect: (\w+)", text)
         base, expect = header.group(1), header.group(2)
         out = work / f"{attack.stem}.json"
-        values = {"@ROOT@": str(root), "@BUILD@": str(grade_build), "@OUT@": str(out), "@LEAK@": str(LEAK_FILE)}
+        values = {"@ROOT@": str(root), "@BUILD@": str(grade_build), "@OUT@": str(out), "@LEAK@": str(LEAK_FILE),
+                  "@PORT@": str(tcp.server.getsockname()[1]), "@ABSTRACT@": abstract_name}
         body = re.sub("|".join(values), lambda m: values[m.group(0)], text)
         prefix = "" if base == "none" else \
             (root / ("solutions" if base == "reference" else "tasks") / "01-camera-rays/camera_rays.cpp").read_text()
@@ -122,12 +228,27 @@ def main() -> int:
         submission.mkdir()
         (submission / "camera_rays.cpp").write_text(prefix + "\n" + body)
         start = time.time()
-        grade = subprocess.run([sys.executable, str(root / "tools/grade"), str(submission), "--tasks", "1",
-                                "--out", str(out), "--build-dir", str(grade_build), "--timeout", str(TIMEOUT),
-                                "--task-budget", str(TASK_BUDGET), "--sandbox", sandbox], capture_output=True, text=True,
-                               timeout=900, env=grader_env)
+        received_before = len(tcp.received) + len(local.received)
+        grade = subprocess.Popen([sys.executable, str(root / "tools/grade"), str(submission), "--tasks", "1",
+                                  "--out", str(out), "--build-dir", str(grade_build), "--timeout", str(TIMEOUT),
+                                  "--task-budget", str(TASK_BUDGET), "--sandbox", sandbox], stdout=subprocess.PIPE,
+                                 stderr=subprocess.PIPE, text=True, env=grader_env)
+        sampler = MemorySampler(grade.pid)
+        sampler.start()
+        try:
+            _, grade.stderr = grade.communicate(timeout=900)
+        finally:
+            sampler.stop.set()
+            sampler.join()
         seconds = time.time() - start
         problems = []
+        if sampler.sandbox_peak > MEMORY_LIMIT + MEMORY_SLACK:
+            problems.append(f"the sandbox held {sampler.sandbox_peak / 2**30:.2f} GB (limit {MEMORY_LIMIT / 2**30:.1f} GB)")
+        if sampler.grader_peak > GRADER_MEMORY:
+            problems.append(f"the grader's side held {sampler.grader_peak / 2**30:.2f} GB")
+        if len(tcp.received) + len(local.received) > received_before:
+            problems.append("a listener outside the sandbox was reached: "
+                            + repr((tcp.received + local.received)[-1][:80]))
         if not out.exists():
             problems.append(f"no results.json (grader exit {grade.returncode}: {grade.stderr[-300:]})")
         else:
@@ -150,6 +271,12 @@ def main() -> int:
                 problems.append("the inline assembly was not refused with a clear message")
             if attack.stem == "sleep-to-limit" and "time budget" not in report_text:
                 problems.append("tests past the task's budget are not reported as not run")
+            if attack.stem == "error-message-flood" and "over the limit" not in report_text:
+                problems.append("the oversized error message is not reported")
+            if attack.stem == "slow-compile" and "compiling took longer" not in report_text:
+                problems.append("the compile's time limit is not reported")
+            if attack.stem == "memory-in-children" and "processes together used" not in report_text:
+                problems.append("the memory limit is not reported")
             if attack.stem == "daemon":
                 time.sleep(3)  # the daemon would rewrite results.json every second
                 if hashlib.sha256(out.read_bytes()).hexdigest() != digest:
@@ -161,13 +288,19 @@ def main() -> int:
         if judge_digest() != judge_before:
             problems.append("the judge binary changed")
         left = sandbox_processes()
+        time.sleep(1)  # a chain of forks may be between two of its processes
+        left = left or sandbox_processes()
         if left:
             problems.append(f"{len(left)} sandbox processes still running")
-        files = sandbox_files()
+        files = sandbox_files(folders)
         if files:
             problems.append(f"sandbox files left behind: {files[:3]}")
+        ipc = sandbox_ipc()
+        if ipc:
+            problems.append(f"System V IPC objects left behind: {ipc[:2]}")
         status = "ok" if not problems else "FAIL: " + "; ".join(problems)
-        print(f"{attack.stem:20s} {sandbox:5s} {seconds:5.1f} s  {status}")
+        print(f"{attack.stem:20s} {sandbox:5s} {seconds:5.1f} s  memory: sandbox {sampler.sandbox_peak / 2**20:5.0f} MB, "
+              f"grader {sampler.grader_peak / 2**20:4.0f} MB  {status}")
         failures += [f"{attack.stem}: {p}" for p in problems]
     if tree_digest() != before_tree:
         failures.append("the repository's tracked files changed")

@@ -98,6 +98,9 @@ polygon("huge-concave-polygon", 150_000, star=True)    # refused: ear clipping i
 polygon("huge-convex-polygon", 150_000, star=False)    # legitimate: split as a fan
 
 # ---- legitimate extremes (rendered, not refused) -------------------------------------------
+# a million point lights (25 MB): loads in seconds (nlohmann's callback parser took minutes: quadratic)
+write("million-lights.json", '{"spheres": [{"center": [0, 0, -3], "radius": 1}], "lights": [' +
+      ",".join(f'{{"position": [{i % 97}, 2, 0]}}' for i in range(1_000_000)) + "]}")
 write("sky-sphere.json", scene_with(  # a huge sphere around the camera, lit from its centre: direct light (-m 1) is 0.5/pi x 1e18/r^2 everywhere
     materials={"wall": {"albedo": [0.5, 0.5, 0.5]}},
     spheres=[{"center": [0, 0, 0], "radius": 1e9, "material": "wall"}],
@@ -113,6 +116,21 @@ with open(out / "bad-texels.pfm", "wb") as f:
     f.write(struct.pack(f"<{len(texels)}f", *texels))
 write("bad-texels.json", scene_with(environment={"image": "bad-texels.pfm"},
                                     spheres=[{"center": [0, 0, -3], "radius": 1}]))
+# an environment map with an alpha channel of 0 (PNG, RGBA): its colours count as stored, with a warning
+def png_rgba(path, w, h, rgba):
+    import zlib
+    raw = b"".join(b"\0" + bytes(rgba) * w for _ in range(h))
+    chunk = lambda t, d: struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xFFFFFFFF)
+    path.write_bytes(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0)) +
+                     chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b""))
+
+
+png_rgba(out / "transparent-sky.png", 8, 4, [255, 128, 0, 0])
+write("transparent-sky.json", scene_with(environment={"image": "transparent-sky.png"}))
+srgb_128 = ((128 / 255 + 0.055) / 1.055) ** 2.4
+with open(out / "transparent-sky-expected.pfm", "wb") as f:  # what the camera sees: the colours, never black
+    f.write(b"PF\n16 12\n-1.0\n")
+    f.write(struct.pack("<576f", *([1.0, srgb_128, 0.0] * 192)))
 # what the camera inside the lit sphere must see: 0.5 / pi everywhere (16 x 12)
 with open(out / "sky-expected.pfm", "wb") as f:
     f.write(b"PF\n16 12\n-1.0\n")

@@ -63,8 +63,10 @@ class Candidate {
       answered = readMessage(fromCandidate_, kResponseMagic, status, answer);
     } catch (const std::exception& e) {
       const std::string how = died(name);
+      // How the candidate ended, and what was wrong with its answer (a crash
+      // mid-answer, or an answer the judge refuses, such as one too long).
       throw CandidateError(how.empty() ? std::string("the candidate broke the protocol during ") + name + ": " + e.what()
-                                       : how);
+                                       : how + " (" + e.what() + ")");
     }
     if (!answered) throw CandidateError(died(name));
     switch (Status(status)) {

@@ -85,8 +85,11 @@ bool readMessage(int fd, uint32_t magic, uint32_t& value, std::string& payload) 
   Header header;
   if (!readAll(fd, &header, sizeof header)) return false;
   if (header.magic != magic) throw std::runtime_error("not a message of this protocol (bad magic number)");
-  if (header.size > kMaxMessageBytes) {
-    throw std::runtime_error("message of " + std::to_string(header.size) + " bytes is over the limit");
+  const bool error = magic == kResponseMagic && header.value != uint32_t(Status::Ok);
+  if (header.size > (error ? kMaxErrorMessageBytes : kMaxMessageBytes)) {
+    throw std::runtime_error((error ? "an error message of " : "a message of ") + std::to_string(header.size) +
+                             " bytes is over the limit of " +
+                             std::to_string(error ? kMaxErrorMessageBytes : kMaxMessageBytes) + " bytes");
   }
   value = header.value;
   payload.resize(header.size);

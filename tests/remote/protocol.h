@@ -26,6 +26,9 @@ inline constexpr int kRequestFd = 3;   // the candidate reads requests here
 inline constexpr int kResponseFd = 4;  // and writes its answers here
 // The largest message either side accepts (a 1e6-sample batch is ~30 MB).
 inline constexpr uint64_t kMaxMessageBytes = uint64_t(512) << 20;
+// The largest answer that is not Ok (an exception's message): the judge
+// shows it under a failed test, so a candidate may not make it hold more.
+inline constexpr uint64_t kMaxErrorMessageBytes = uint64_t(64) << 10;
 
 enum class Status : uint32_t {
   Ok = 0,
@@ -53,7 +56,9 @@ long readSome(int fd, void* data, size_t size);
 void closeDescriptor(int fd);  // ignores -1
 
 // One framed message: header then payload. readMessage returns false at a
-// clean end of file and throws on a bad magic or an oversized payload.
+// clean end of file and throws on a bad magic or an oversized payload
+// (over kMaxMessageBytes; for a response whose status is not Ok, over
+// kMaxErrorMessageBytes).
 void writeMessage(int fd, uint32_t magic, uint32_t value, const std::string& payload);
 bool readMessage(int fd, uint32_t magic, uint32_t& value, std::string& payload);
 

@@ -37,6 +37,10 @@ int Server::run(int requestFd, int responseFd) {
       status = Status::Threw;
       answer.bytes() = "an exception that is not a std::exception";
     }
+    if (status != Status::Ok && answer.bytes().size() > kMaxErrorMessageBytes) {  // the judge takes no more
+      answer.bytes().resize(kMaxErrorMessageBytes - 32);
+      answer.bytes() += " [... message cut ...]";
+    }
     writeMessage(responseFd, kResponseMagic, uint32_t(status), answer.bytes());
   }
   return 0;
