@@ -216,6 +216,32 @@ TriangleMesh coilMesh(const Object& o) {
   return coil(turns, segments, sides, wire);
 }
 
+// The triangles a mesh will have, known from its description alone
+// (procedural and inline meshes; an OBJ file counts once loaded), so a scene
+// over its budget fails before anything is built. Values out of range, and
+// a mesh over its own cap, count as their limit: the mesh's own parse
+// reports them.
+size_t plannedTriangles(const Json& mesh) {
+  constexpr int64_t kMostPerProceduralMesh = int64_t(2) << 22;  // 4,194,304 quads
+
+  auto count = [](const Json& o, const char* key, int64_t fallback, int64_t most) -> int64_t {
+    if (!o.is_object() || !o.contains(key) || !o.at(key).is_number_integer()) return fallback;
+    return std::clamp<int64_t>(o.at(key).get<int64_t>(), 0, most);
+  };
+  if (!mesh.is_object()) return 0;
+  if (mesh.contains("bumpy_sphere")) {
+    const Json& b = mesh.at("bumpy_sphere");
+    return size_t(std::min(kMostPerProceduralMesh, 2 * count(b, "rings", 64, 4096) * count(b, "segments", 128, 4096)));
+  }
+  if (mesh.contains("coil")) {
+    const Json& c = mesh.at("coil");
+    return size_t(std::min(kMostPerProceduralMesh,
+                           2 * count(c, "turns", 40, 4096) * count(c, "segments", 32, 4096) * count(c, "sides", 8, 256)));
+  }
+  if (mesh.contains("triangles") && mesh.at("triangles").is_array()) return mesh.at("triangles").size();
+  return 0;
+}
+
 bool hasArea(const TriangleMesh& mesh) {
   for (const glm::uvec3& t : mesh.triangles) {
     Vec3 e1 = mesh.positions[t.y] - mesh.positions[t.x], e2 = mesh.positions[t.z] - mesh.positions[t.x];
@@ -280,6 +306,15 @@ Scene parseScene(const Source& source, const Json& root) {
 
   if (top.has("meshes")) {
     const Json& meshes = top.array("meshes");
+    size_t planned = 0;
+    for (size_t i = 0; i < meshes.size(); ++i) {
+      planned += plannedTriangles(meshes[i]);
+      if (planned > kMaxSceneTriangles) {
+        top.fail(indexed("meshes", i), "the scene's meshes have more than " + std::to_string(kMaxSceneTriangles) +
+                                           " triangles together (" + std::to_string(planned) +
+                                           " with this one): the most one scene may have");
+      }
+    }
     size_t sceneTriangles = 0;
     for (size_t i = 0; i < meshes.size(); ++i) {
       Object o(source, meshes[i], indexed("meshes", i),
