@@ -216,6 +216,12 @@ TriangleMesh coilMesh(const Object& o) {
   return coil(turns, segments, sides, wire);
 }
 
+// The error of a scene whose meshes reach `total` triangles, over kMaxSceneTriangles.
+std::string overSceneBudget(size_t total) {
+  return "the scene's meshes have more than " + std::to_string(kMaxSceneTriangles) + " triangles together (" +
+         std::to_string(total) + " with this one): the most one scene may have";
+}
+
 // The triangles a mesh will have, known from its description alone
 // (procedural and inline meshes; an OBJ file counts once loaded), so a scene
 // over its budget fails before anything is built. Values out of range, and
@@ -310,9 +316,7 @@ Scene parseScene(const Source& source, const Json& root) {
     for (size_t i = 0; i < meshes.size(); ++i) {
       planned += plannedTriangles(meshes[i]);
       if (planned > kMaxSceneTriangles) {
-        top.fail(indexed("meshes", i), "the scene's meshes have more than " + std::to_string(kMaxSceneTriangles) +
-                                           " triangles together (" + std::to_string(planned) +
-                                           " with this one): the most one scene may have");
+        top.fail(indexed("meshes", i), overSceneBudget(planned));
       }
     }
     size_t sceneTriangles = 0;
@@ -353,9 +357,7 @@ Scene parseScene(const Source& source, const Json& root) {
       mesh.material = materialFor(o);
       sceneTriangles += mesh.triangles.size();
       if (sceneTriangles > kMaxSceneTriangles) {
-        o.fail(indexed("meshes", i), "the scene's meshes have more than " + std::to_string(kMaxSceneTriangles) +
-                                         " triangles together (" + std::to_string(sceneTriangles) +
-                                         " with this one): the most one scene may have");
+        o.fail(indexed("meshes", i), overSceneBudget(sceneTriangles));
       }
       scene.meshes.push_back(std::move(mesh));
     }

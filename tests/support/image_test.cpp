@@ -51,6 +51,11 @@ std::string referencePath(const ImageCase& c, const char* suffix) {
   return std::string(PATHLAB_TESTS_DIR) + "/" + c.suite + "/images/" + c.name + suffix;
 }
 
+// z()'s rounding floor from the reference's value alone, where noise is
+// measured: a huge mean of yours must not raise the floor its own noise is
+// measured against.
+double noiseFloor(double reference) { return kRelativeFloor * std::abs(reference) + kAbsoluteFloor; }
+
 // One block (or the whole image) of one channel in both images.
 struct Comparison {
   double yours = 0, yoursVariance = 0, reference = 0, referenceVariance = 0;
@@ -58,9 +63,7 @@ struct Comparison {
   // the candidate's samples per pixel: how much noisier the candidate is.
   double yoursOwnVariance = 0, referenceAtYourSpp = 0;
   double noiseRatio() const {
-    // z()'s rounding floor, from the reference's value alone: a huge mean of
-    // yours must not raise the floor its own noise is measured against.
-    const double floor = kRelativeFloor * std::abs(reference) + kAbsoluteFloor;
+    const double floor = noiseFloor(reference);
     return yoursOwnVariance / std::max(referenceAtYourSpp, floor * floor);
   }
   double z() const {
@@ -81,7 +84,7 @@ double medianNoiseRatio(const PixelMoments& yours, const PixelMoments& reference
   std::vector<double> ratios(pixels);
   for (size_t i = 0; i < pixels; ++i) {
     const double referenceAtSpp = double(reference.varianceOfMean[i][channel]) * kReferenceSppFactor;
-    const double floor = kRelativeFloor * std::abs(double(reference.mean[i][channel])) + kAbsoluteFloor;
+    const double floor = noiseFloor(reference.mean[i][channel]);
     ratios[i] = double(yours.varianceOfMean[i][channel]) / std::max({referenceAtSpp, typical, floor * floor});
   }
   std::nth_element(ratios.begin(), ratios.begin() + pixels / 2, ratios.end());
