@@ -65,6 +65,119 @@ function(pathlab_add_tasks)
       endif()
     endforeach()
   endforeach()
+  if(EXISTS ${CMAKE_SOURCE_DIR}/solutions)
+    pathlab_add_reference_objects_target()
+    set(status "source: solutions/")
+  else()
+    pathlab_import_reference_objects(status)
+  endif()
+  # Read by tools/check: where this build's reference comes from.
+  set(PATHLAB_REFERENCE_STATUS "${status}" CACHE INTERNAL "Where the reference tasks come from")
+  file(WRITE ${CMAKE_BINARY_DIR}/pathlab-reference.txt "${status}\n")
+endfunction()
+
+# ---- The reference as compiled objects ---------------------------------
+# The student release has no solutions/, but may carry the reference
+# compiled, one folder per platform: reference-objects/PLATFORM/task-N.o
+# and manifest.json (tools/make-student-release copies what the target
+# pathlab-reference-objects makes). Where one matches the compiler and the
+# framework headers, the judges and every candidate link the same
+# reference as the grader, so tools/check predicts the grade; elsewhere
+# the reference falls back to the student's own files (and says so).
+
+# pathlab_reference_platform(out): e.g. Linux-x86_64-GNU, Darwin-arm64-AppleClang-libcxx.
+function(pathlab_reference_platform out)
+  set(p "${CMAKE_SYSTEM_NAME}-${CMAKE_SYSTEM_PROCESSOR}-${CMAKE_CXX_COMPILER_ID}")
+  if(PATHLAB_LIBCXX OR APPLE)
+    string(APPEND p "-libcxx")
+  endif()
+  set(${out} ${p} PARENT_SCOPE)
+endfunction()
+
+# pathlab_framework_digest(out): the framework headers a task file compiles
+# against (line endings normalised: a Windows checkout may add CRs). Objects
+# built against other headers could disagree with them on a struct's layout.
+function(pathlab_framework_digest out)
+  file(GLOB headers RELATIVE ${CMAKE_SOURCE_DIR}/framework CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/framework/*/*.h)
+  list(SORT headers)
+  set(all "")
+  foreach(header IN LISTS headers)
+    file(READ ${CMAKE_SOURCE_DIR}/framework/${header} text)
+    string(REPLACE "\r\n" "\n" text "${text}")
+    string(SHA256 hash "${text}")
+    string(APPEND all "${header} ${hash}\n")
+  endforeach()
+  string(SHA256 digest "${all}")
+  set(${out} ${digest} PARENT_SCOPE)
+endfunction()
+
+# The course tree: `cmake --build B --target pathlab-reference-objects` puts
+# B/reference-objects/PLATFORM/ (the reference's task files, compiled as
+# this build compiles them, debug sections and local symbols stripped).
+function(pathlab_add_reference_objects_target)
+  pathlab_reference_platform(platform)
+  pathlab_framework_digest(digest)
+  set(dest ${CMAKE_BINARY_DIR}/reference-objects/${platform})
+  set(commands "")
+  set(names "")
+  foreach(n RANGE 1 ${PATHLAB_TASK_COUNT})
+    set(object ${dest}/task-${n}${CMAKE_CXX_OUTPUT_EXTENSION})
+    list(APPEND commands COMMAND ${CMAKE_COMMAND} -E copy $<TARGET_OBJECTS:pathlab_task${n}_reference> ${object})
+    if(CMAKE_OBJCOPY AND NOT APPLE AND NOT MSVC)
+      list(APPEND commands COMMAND ${CMAKE_OBJCOPY} --strip-debug --discard-all ${object})
+    endif()
+    list(APPEND names "\"${n}\": \"task-${n}${CMAKE_CXX_OUTPUT_EXTENSION}\"")
+  endforeach()
+  list(JOIN names ", " names)
+  file(GENERATE OUTPUT ${dest}/manifest.json CONTENT "{
+  \"platform\": \"${platform}\",
+  \"compiler\": \"${CMAKE_CXX_COMPILER_ID}\",
+  \"compiler_version\": \"${CMAKE_CXX_COMPILER_VERSION}\",
+  \"build_type\": \"${CMAKE_BUILD_TYPE}\",
+  \"framework_digest\": \"${digest}\",
+  \"objects\": {${names}}
+}
+")
+  add_custom_target(pathlab-reference-objects ${commands} COMMAND_EXPAND_LISTS VERBATIM
+                    COMMENT "The reference's compiled task files in ${dest}")
+  foreach(n RANGE 1 ${PATHLAB_TASK_COUNT})
+    add_dependencies(pathlab-reference-objects pathlab_task${n}_reference)
+  endforeach()
+endfunction()
+
+# pathlab_import_reference_objects(status): the student release's reference,
+# where reference-objects/ has this platform's; `status` says what was used.
+function(pathlab_import_reference_objects status)
+  pathlab_reference_platform(platform)
+  set(folder ${CMAKE_SOURCE_DIR}/reference-objects/${platform})
+  set(why "")
+  if(NOT EXISTS ${folder}/manifest.json)
+    set(why "no compiled reference for ${platform} in reference-objects/")
+  else()
+    file(READ ${folder}/manifest.json manifest)
+    string(JSON built_version GET "${manifest}" compiler_version)
+    string(JSON built_digest GET "${manifest}" framework_digest)
+    pathlab_framework_digest(digest)
+    string(REGEX MATCH "^[0-9]+" built_major "${built_version}")
+    string(REGEX MATCH "^[0-9]+" major "${CMAKE_CXX_COMPILER_VERSION}")
+    if(NOT digest STREQUAL built_digest)
+      set(why "the framework headers differ from those the compiled reference was built against (edited?)")
+    elseif(major LESS built_major)
+      set(why "the compiled reference needs ${CMAKE_CXX_COMPILER_ID} ${built_major} or newer (this is ${CMAKE_CXX_COMPILER_VERSION})")
+    endif()
+  endif()
+  if(why)
+    message(STATUS "PathLab: ${why}: the judges and candidates use your own files for every task")
+    set(${status} "none: ${why}" PARENT_SCOPE)
+    return()
+  endif()
+  foreach(n RANGE 1 ${PATHLAB_TASK_COUNT})
+    string(JSON object GET "${manifest}" objects ${n})
+    add_library(pathlab_task${n}_reference OBJECT IMPORTED GLOBAL)
+    set_target_properties(pathlab_task${n}_reference PROPERTIES IMPORTED_OBJECTS ${folder}/${object})
+  endforeach()
+  message(STATUS "PathLab: the reference tasks from reference-objects/${platform} (compiled)")
+  set(${status} "compiled: reference-objects/${platform}" PARENT_SCOPE)
 endfunction()
 
 # pathlab_link_tasks(TARGET <target> [VARIANT reference|student|selected]

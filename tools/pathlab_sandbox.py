@@ -29,6 +29,8 @@ def run(command, cwd=None, timeout=None, env=None, keep=OUTPUT_KEPT):
     Of the output only the first and last `keep` bytes are held (a flood of
     compiler diagnostics must not fill the grader's memory); the middle is
     replaced by a line saying how much was left out."""
+    if os.name == "nt":
+        return run_windows(command, cwd, timeout, env)
     try:
         p = subprocess.Popen(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, env=env,
                              start_new_session=True)
@@ -70,6 +72,23 @@ def run(command, cwd=None, timeout=None, env=None, keep=OUTPUT_KEPT):
         p.stdout.close()
     out = bytes(head) + (f"\n[... {dropped} bytes of output left out ...]\n".encode() if dropped else b"") + bytes(tail)
     return (None if timed_out else p.returncode), out.decode("utf-8", "replace")
+
+
+def run_windows(command, cwd, timeout, env):
+    """run() on Windows (tools/check only; never the grader): no process
+    groups there, and select() takes no pipes, so communicate() with a timeout."""
+    try:
+        p = subprocess.Popen(command, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, env=env)
+    except OSError as e:
+        return 127, str(e)
+    try:
+        out, _ = p.communicate(timeout=timeout)
+        code = p.returncode
+    except subprocess.TimeoutExpired:
+        p.kill()
+        out, _ = p.communicate()
+        code = None
+    return code, out.decode("utf-8", "replace")
 
 
 def become_subreaper() -> None:

@@ -5,7 +5,8 @@ GitHub Actions cannot run here, so this checks the workflow against what
 can be checked: every `run:` command is a line of a sh block in
 docs/setup.md; the MSYS2 `install:` list is setup.md's pacman list; the
 Ubuntu apt list is tools/packages.sh's pathlab_core (what the grader
-builds with); the matrix is Ubuntu, macOS and Windows; every preset a
+builds with); the matrix is Ubuntu, macOS and Windows; it runs the check
+before submitting (tools/check) into the job summary; every preset a
 command names exists; tools/make-student-release installs the file; and
 .vscode/launch.json debugs the student build's suites and renderer.
 
@@ -67,6 +68,9 @@ def check(repo, workflow, setup, release_script):
             for name in re.findall(pattern, run):
                 if name not in names:
                     problems.append(f"'{run}' names {kind[:-1]} '{name}', which CMakePresets.json lacks")
+    checks = [r for r in runs if r.startswith("python3 tools/check")]
+    if len(checks) != 1 or "$GITHUB_STEP_SUMMARY" not in checks[0] or not (repo / "tools/check").exists():
+        problems.append("the workflow does not run tools/check (the check before submitting) into the job summary")
     installed = repo / ".github/workflows/pathlab.yml"  # in a student release
     if installed.exists() and installed.read_text() != workflow:
         problems.append(".github/workflows/pathlab.yml differs from tools/student-ci.yml")
@@ -111,10 +115,11 @@ def main():
         altered = {
             "a command changed": (workflow.replace("cmake --build --preset student", "cmake --build build"), setup),
             "a package dropped from brew": (workflow.replace(" fast_float glfw\n", " glfw\n"), setup),
-            "a package dropped from MSYS2": (workflow.replace(" mingw-w64-ucrt-x86_64-glfw\n", "\n"), setup),
+            "a package dropped from MSYS2": (workflow.replace(" mingw-w64-ucrt-x86_64-python\n", "\n"), setup),
             "a package added to apt": (workflow.replace("libpugixml-dev\n", "libpugixml-dev libfoo\n"), setup),
             "the docs' command changed": (workflow, setup.replace("brew install cmake", "brew install cmake gcc")),
             "windows dropped from the matrix": (workflow.replace(", windows-latest]", "]"), setup),
+            "the check before submitting dropped": (workflow.replace("run: python3 tools/check", "run: true"), setup),
             "a preset that does not exist": (workflow.replace("ctest --preset student", "ctest --preset students"),
                                              setup.replace("ctest --preset student", "ctest --preset students")),
         }

@@ -8,7 +8,11 @@ and then, for each submission, the student's files are put flat in
 AUTOGRADER_ROOT/submission and run_autograder must write
 AUTOGRADER_ROOT/results/results.json in Gradescope's schema:
   - the reference solutions (solutions/*/*.cpp, flat): full marks;
-  - the untouched stubs (tasks/*/*.cpp, flat): 0, with every test present.
+  - the untouched stubs (tasks/*/*.cpp, flat): 0, with every test present;
+  - five mutants and two alternates (SAME_SCORE_FILES: one task file each):
+    graded, and kept with their submissions for tests/grader/test_check.py,
+    which checks that a student's tools/check gives the same per-test scores.
+Every submission and its results.json are kept in WORK_DIR/gradescope-results/.
 Nothing may be written to the real /autograder. The scratch folder is
 removed when everything passed (kept with --keep, or on failure).
 
@@ -31,6 +35,16 @@ autograder = work / "autograder"  # stands in for /autograder
 REAL = Path("/autograder")
 SETUP_TIMEOUT, GRADE_TIMEOUT = 1200, 900
 VISIBILITIES = {"hidden", "after_due_date", "after_published", "visible"}
+# Graded here and by a student's tools/check (test_check.py): mistakes that
+# keep part of the points, and correct solutions written differently.
+SAME_SCORE_FILES = ["tests/mutants/01-camera-rays/half-pixel-offset.cpp",
+                    "tests/mutants/02-intersection/swapped-barycentrics.cpp",
+                    "tests/mutants/03-bvh/median-split.cpp",
+                    "tests/mutants/05-path-tracing/roulette-not-rescaled.cpp",
+                    "tests/mutants/07-environment/pdf-without-sin-theta.cpp",
+                    "tests/alternates/03-bvh/eight-bins.cpp",
+                    "tests/alternates/06-mirror-glass/exact-fresnel.cpp"]
+kept = work_dir / "gradescope-results"  # KIND/ (the submission) and KIND.json, for test_check.py
 
 
 def snapshot(path: Path):
@@ -98,8 +112,13 @@ def grade(kind: str, sources, env, failures):
         shutil.rmtree(folder, ignore_errors=True)
         folder.mkdir()
     for source in sources:  # tasks/*/debugger.cpp: seven of one name, the first kept (the grader ignores it)
-        if not (submission / source.name).exists():
-            shutil.copy(source, submission / source.name)
+        name = source.name
+        if source.parent.parent.name in ("mutants", "alternates"):  # handed in as the task's own file
+            name = source.parent.name[3:].replace("-", "_") + ".cpp"
+        if not (submission / name).exists():
+            shutil.copy(source, submission / name)
+    shutil.rmtree(kept / kind, ignore_errors=True)
+    shutil.copytree(submission, kept / kind)
     start = time.time()
     with open(results / "stdout", "w") as log:  # as Gradescope's harness keeps it
         run = subprocess.run([str(autograder / "run_autograder")], cwd=autograder, env=env, stdout=log,
@@ -115,6 +134,7 @@ def grade(kind: str, sources, env, failures):
         return None
     if f"grading {submission}/" not in stdout:
         failures.append(f"{kind}: the grader did not grade the files in {submission}:\n{stdout[-1000:]}")
+    shutil.copy(out, kept / f"{kind}.json")
     report = json.loads(out.read_text())
     problems = schema_problems(report)
     failures += [f"{kind}: {p}" for p in problems]
@@ -131,6 +151,8 @@ def main() -> int:
     real_before = snapshot(REAL)
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
+    shutil.rmtree(kept, ignore_errors=True)
+    kept.mkdir(parents=True)
     env = environment()
     start = time.time()
 
@@ -187,6 +209,10 @@ def main() -> int:
                         or "did not link" in t["output"]]
             if compiled:
                 failures.append(f"stubs: {len(compiled)} tests report a build failure, e.g. {compiled[0]}")
+
+        for path in SAME_SCORE_FILES:
+            kind = Path(path).parent.parent.name + "-" + Path(path).stem  # e.g. mutants-half-pixel-offset
+            grade(kind, [root / path], env, failures)  # its score is the validity matrix's to judge
 
     # Nothing outside the scratch folder: the real /autograder is untouched.
     if snapshot(REAL) != real_before:

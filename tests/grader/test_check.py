@@ -1,0 +1,137 @@
+#!/usr/bin/env python3
+"""A student's `tools/check` gives Gradescope's grade, test by test.
+
+test_gradescope.py graded submissions with run_autograder in the Gradescope
+layout and kept each one (WORK_DIR/gradescope-results/KIND/, the files as
+handed in) with its results.json (KIND.json): the reference solutions, the
+stubs, five mutants and two alternates. Here the student release is made
+(tools/make-student-release --no-check --worktree: no solutions/, no grader, the
+reference compiled into reference-objects/) and, inside it, tools/check
+grades each of those submissions as a student would run it. For every
+submission: the same tests, each with the same score and points, the same
+total; and the check says it linked the compiled reference. Also: the
+release holds no solutions/ and no tools/grade; a task file that includes
+a file outside the framework's headers, or that links only with the
+student's own other task (a helper in another task's file), loses that
+task's points as Gradescope's grader does (the rules are the grader's).
+
+usage: test_check.py REPO_ROOT WORK_DIR [--keep]"""
+import json
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
+keep = "--keep" in sys.argv[3:]
+graded = work_dir / "gradescope-results"
+work = work_dir / "student-check"
+release = work / "release"
+
+
+def per_test(report):
+    return {t["name"]: (t["score"], t["max_score"]) for t in report["tests"]}
+
+
+def check(submission: Path, out: Path):
+    """tools/check in the release, as the README says; (exit code, stdout, results or None)."""
+    start = time.time()
+    run = subprocess.run([sys.executable, "tools/check", str(submission), "--out", str(out)], cwd=release,
+                         capture_output=True, text=True, timeout=1800)
+    print(f"  tools/check {submission.name}: exit {run.returncode}, {time.time() - start:.0f} s")
+    return run.returncode, run.stdout + run.stderr, json.loads(out.read_text()) if out.exists() else None
+
+
+def main() -> int:
+    failures = []
+    kinds = sorted(p.stem for p in graded.glob("*.json"))
+    expected = {"reference", "stubs"}
+    if not expected <= set(kinds) or len(kinds) < 9:
+        print(f"FAIL: {graded} holds {kinds}: run gradescope-zip first (test_gradescope.py)")
+        return 1
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    t = time.time()
+    made = subprocess.run([str(root / "tools/make-student-release"), "--no-check", "--worktree", str(release)],
+                          capture_output=True, text=True, timeout=1200)
+    print(f"student release: exit {made.returncode}, {time.time() - t:.0f} s")
+    if made.returncode != 0:
+        print(f"FAIL: make-student-release:\n{made.stdout[-2000:]}{made.stderr[-2000:]}")
+        return 1
+    for absent in ("solutions", "tools/grade", "tests/mutants"):
+        if (release / absent).exists():
+            failures.append(f"the release has {absent}")
+    if not list(release.glob("reference-objects/*/manifest.json")):
+        failures.append("the release has no compiled reference (reference-objects/*/manifest.json)")
+
+    for kind in kinds:
+        gradescope = json.loads((graded / f"{kind}.json").read_text())
+        code, output, mine = check(graded / kind, work / f"{kind}.json")
+        if mine is None:
+            failures.append(f"{kind}: tools/check wrote no results.json:\n{output[-2000:]}")
+            continue
+        theirs, ours = per_test(gradescope), per_test(mine)
+        differ = [(n, theirs.get(n), ours.get(n)) for n in sorted(set(theirs) | set(ours)) if theirs.get(n) != ours.get(n)]
+        print(f"{kind}: Gradescope {gradescope['score']:g}, tools/check {mine['score']:g} of "
+              f"{sum(t['max_score'] for t in mine['tests']):g}; {len(ours)} tests, {len(differ)} differ")
+        for name, a, b in differ[:5]:
+            failures.append(f"{kind}: {name}: Gradescope {a}, tools/check {b}")
+        if mine["score"] != gradescope["score"]:
+            failures.append(f"{kind}: total {mine['score']:g} against Gradescope's {gradescope['score']:g}")
+        if "WARNING" in output or "compiled: reference-objects/" not in \
+                (release / "build-check/pathlab-reference.txt").read_text():
+            failures.append(f"{kind}: the check did not link the compiled reference:\n{output[-1500:]}")
+        if "Total" not in output:
+            failures.append(f"{kind}: no table in the check's output:\n{output[-1500:]}")
+
+    # The grader's include rule: a framework-internal path is refused, as on Gradescope.
+    sneaky = work / "sneaky"
+    sneaky.mkdir()
+    source = (root / "solutions/01-camera-rays/camera_rays.cpp").read_text()
+    (sneaky / "camera_rays.cpp").write_text('#include "../../framework/core/camera.h"\n' + source)
+    _, output, report = check(sneaky, work / "sneaky.json")
+    task1 = [t for t in (report or {"tests": []})["tests"] if t["name"].startswith("Task 1:")]
+    if not task1 or any(t["score"] for t in task1) or "includes files other than" not in task1[0]["output"]:
+        failures.append(f"an include outside the framework's headers was not refused:\n{output[-1500:]}")
+
+    # A task file that only links with the student's own other task (a helper
+    # written in intersection.cpp, used by direct_lighting.cpp): fine in the
+    # student's build, 0 for task 4 on Gradescope, and so in the check.
+    shared = work / "shared-helper"
+    shared.mkdir()
+    intersection = (root / "solutions/02-intersection/intersection.cpp").read_text()
+    end = intersection.rindex("}  // namespace pathlab")
+    (shared / "intersection.cpp").write_text(
+        intersection[:end] + "float myInverseOrZero(float x) { return x != 0.0f ? 1.0f / x : 0.0f; }\n" + intersection[end:])
+    lighting = (root / "solutions/04-direct-lighting/direct_lighting.cpp").read_text()
+    helper_use = "Color lambertianBrdf(const Color& albedo) { return albedo * kInvPi; }"
+    if helper_use not in lighting:
+        failures.append("solutions/04-direct-lighting/direct_lighting.cpp changed: update the shared-helper case")
+    (shared / "direct_lighting.cpp").write_text(lighting.replace(
+        helper_use, "float myInverseOrZero(float x);\n"
+                    "Color lambertianBrdf(const Color& albedo) { return albedo * (kInvPi * myInverseOrZero(1.0f)); }"))
+    _, output, report = check(shared, work / "shared-helper.json")
+    by_task = {}
+    for test in (report or {"tests": []})["tests"]:
+        by_task.setdefault(test["name"].split(":")[0], []).append(test)
+    task2, task4 = by_task.get("Task 2", []), by_task.get("Task 4", [])
+    if not task2 or any(t["score"] < t["max_score"] for t in task2) or not task4 or \
+            any(t["score"] for t in task4) or "did not link on its own" not in task4[0]["output"] or \
+            "myInverseOrZero" not in output:
+        failures.append(f"a task file using another task's helper: not task 2 full and task 4 0 "
+                        f"with the linker's reason in the table:\n{output[-1500:]}")
+
+    for f in failures:
+        print("FAIL:", f)
+    if failures:
+        print(f"kept: {work}")
+        return 1
+    if not keep:
+        shutil.rmtree(work, ignore_errors=True)
+    print(f"student-check: {len(kinds)} submissions, the same score test by test as Gradescope's")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

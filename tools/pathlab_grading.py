@@ -1,0 +1,553 @@
+"""What tools/grade (the grader, in its sandbox) and tools/check (a
+student's own check, no sandbox) share, so the two cannot drift apart:
+finding the task files in a submission, the compile rules (each task file
+alone, only the framework's headers and the compiler's own, no inline
+assembly), the judges, the points, the time budgets and results.json.
+
+Grader(options, sandbox).grade(submission, tasks) grades; the sandbox is
+pathlab_sandbox.Sandbox for tools/grade, Unsandboxed for tools/check."""
+import json
+import os
+import re
+import shlex
+import shutil
+import stat
+import sys
+import tempfile
+import time
+import zipfile
+import zlib
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
+from pathlab_sandbox import MemoryWatch, run  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+TASKS = pathlab_tasks.tasks()  # {n: (folder, file)}: the tasks/NN-name folders
+OUTPUT_LIMIT = 6000          # characters of a test's output kept in results.json
+MAX_TASK_FILE = 1 << 20      # a task file larger than 1 MB is refused
+MAX_ZIP_BYTES = 64 << 20     # what a submission zip may unpack to
+# The limits of a grade (tools/grade's defaults, so Gradescope's; tools/check's).
+TEST_TIMEOUT = 60.0          # seconds per test case
+TASK_BUDGET = 300.0          # seconds for one task: compiling and all its tests
+SUBMISSION_BUDGET = 1200.0   # seconds for the whole submission
+
+
+def clip(text: str, limit: int = OUTPUT_LIMIT) -> str:
+    return text if len(text) <= limit else text[: limit // 2] + "\n[... output cut ...]\n" + text[-limit // 2 :]
+
+
+# ---------------------------------------------------------------- intake
+
+def unpack_zip(path: Path, into: Path):
+    """Unpacks what can be unpacked safely; returns a note per member left out
+    (links, names that climb out or are too long, clashes, unreadable data).
+    A zip that cannot be read at all raises ValueError."""
+    notes = []
+    try:
+        archive = zipfile.ZipFile(path)
+        members = archive.infolist()
+    except (zipfile.BadZipFile, OSError, ValueError, RuntimeError, EOFError) as e:
+        raise ValueError(f"{path.name} is not a readable zip archive ({e})") from None
+    total = 0
+    with archive:
+        for info in members:
+            name = Path(info.filename)
+            shown = info.filename[:80]
+            if info.is_dir():
+                continue
+            if name.is_absolute() or ".." in name.parts or stat.S_ISLNK(info.external_attr >> 16):
+                notes.append(f"{shown}: left out (a link, or a path that leaves the archive)")
+                continue
+            if any(len(part.encode()) > 200 for part in name.parts) or len(info.filename.encode()) > 1000:
+                notes.append(f"{shown}...: left out (a name too long)")
+                continue
+            target = into / name
+            created = False
+            try:
+                target.parent.mkdir(parents=True, exist_ok=True)
+                with archive.open(info) as src, open(target, "xb") as dst:
+                    created = True
+                    while chunk := src.read(1 << 16):
+                        total += len(chunk)
+                        if total > MAX_ZIP_BYTES:
+                            raise ValueError(f"{path.name} unpacks to more than {MAX_ZIP_BYTES >> 20} MB")
+                        dst.write(chunk)
+            except ValueError:
+                raise
+            except (zipfile.BadZipFile, zlib.error, OSError, RuntimeError, EOFError, NotImplementedError) as e:
+                # Corrupt or encrypted data, or a file where a folder of the same name is (or the reverse).
+                reason = e.strerror if isinstance(e, OSError) and e.strerror else str(e)[:100]  # no grader paths
+                notes.append(f"{shown}: left out ({type(e).__name__}: {reason})")
+                if created:  # what this member began to write (never an earlier member of the same name)
+                    target.unlink(missing_ok=True)
+    return notes
+
+
+def find_task_files(folder: Path):
+    """For each task, the file graded and a note on what else was found."""
+    by_name = {}
+    for dirpath, dirnames, filenames in os.walk(folder):  # symbolic links are not followed
+        dirnames[:] = sorted(d for d in dirnames if not d.startswith("."))
+        for name in filenames:
+            by_name.setdefault(name, []).append(Path(dirpath) / name)
+    found = {}
+    for task, (directory, file_name) in TASKS.items():
+        paths = [p for p in by_name.get(file_name, []) if p.is_file() and not p.is_symlink()]
+        if not paths:
+            continue
+        # A repository's tasks/NN-name/ copy first, then the shallowest.
+        paths.sort(key=lambda p: (p.parent.name != directory, len(p.relative_to(folder).parts), str(p)))
+        note = f" ({len(paths) - 1} other {file_name} ignored)" if len(paths) > 1 else ""
+        found[task] = (paths[0], note)
+    return found
+
+
+# ---------------------------------------------------------------- building
+
+# The framework's layer folders (framework/util, framework/core, ...): a task
+# file includes their headers as "core/scene.h", and system headers.
+LAYERS = sorted(p.name for p in (ROOT / "framework").iterdir() if p.is_dir())
+
+
+def system_include_dirs(compiler: str, arguments):
+    """The compiler's own header folders (#include <...> search list), as it reports them."""
+    flags = [a for a in arguments if a.startswith(("-std=", "-stdlib=", "--target", "-nostdinc"))]
+    code, out = run([compiler, "-xc++", *flags, "-E", "-v", "-o", os.devnull, os.devnull], timeout=60)
+    dirs, inside = [], False
+    for line in out.splitlines():
+        if line.startswith("#include <...> search starts here"):
+            inside = True
+        elif line.startswith("End of search list"):
+            break
+        elif inside and line.startswith(" "):
+            dirs.append(canonical(line.split(" (framework directory)")[0].strip()) + os.sep)
+    if code != 0 or not dirs:
+        raise RuntimeError(f"could not list {compiler}'s header folders:\n" + clip(out, 2000))
+    return dirs
+
+
+def canonical(path: str) -> str:
+    """A path as the include check compares it: links resolved (and, on Windows, one case and one separator)."""
+    return os.path.normcase(os.path.realpath(path))
+
+
+def files_read(preprocessor_output: str, dependency_file: Path):
+    """Every file the preprocessor opened or asked for: -H lines (". path",
+    printed even before an error) and the -M -MG dependency list (which also
+    has the implicit ones, and the missing ones)."""
+    files = [m.group(1) for m in re.finditer(r"^\.+ (\S.*)$", preprocessor_output, re.M)]
+    # A file it could not open stops it before -H or -M name it (uid mode: the repository is unreadable).
+    files += re.findall(r"fatal error: (.+?): (?:Permission denied|Is a directory|No such file or directory)$",
+                        preprocessor_output, re.M)
+    if dependency_file.exists():
+        files += dependency_file.read_text(errors="replace").replace("\\\n", " ").split(":", 1)[-1].split()
+    return files
+def compile_command(build: Path, task: int):
+    """The compiler line CMake uses for task `task`'s reference file, as a list."""
+    directory, file_name = TASKS[task]
+    entries = json.loads((build / "compile_commands.json").read_text())
+    for entry in entries:
+        if entry["file"].endswith(f"solutions/{directory}/{file_name}") or \
+           entry["file"].endswith(f"tasks/{directory}/{file_name}"):
+            return shlex.split(entry["command"])
+    raise RuntimeError(f"no compile command for {file_name} in {build}")
+
+
+class Unsandboxed:
+    """tools/check's stand-in for the sandbox: the student's own code on the
+    student's own machine runs as the student, with no limits but the time
+    budgets (the same interface as pathlab_sandbox.Sandbox, doing nothing)."""
+    mode, root, warning, confine = "none", False, "", None
+
+    def command(self, argv, scratch, **_):
+        return list(argv)
+
+    def path(self, scratch: Path, real: Path) -> str:
+        return str(real)
+
+    def out_path(self, writable: Path, real: Path) -> str:
+        return str(real)
+
+    def give(self, path): pass
+    def protect(self, paths): pass
+    def deny_shared_folders(self): pass
+    def restore(self): pass
+    def clean_up(self, stale=False): pass
+
+
+class Grader:
+    """options: out, build_dir, timeout, task_budget, budget, sanitize,
+    fail_under (tools/grade's command-line options); sandbox: where
+    untrusted commands run; say: where progress lines go."""
+
+    def __init__(self, args, sandbox, say=None):
+        self.args = args
+        self.say = say or (lambda text, progress=False: progress or print(text, flush=True))
+        self.start = time.time()
+        self.results = []
+        self.notes = []  # what the submission's archive left out
+        self.total = 0.0
+        self.build = Path(args.build_dir).resolve()
+        self.objects = self.build / "submission-objects"
+        self.work = Path(tempfile.mkdtemp(prefix="pathlab-grade-"))
+        os.chmod(self.work, 0o711)  # the sandbox uid may enter its own scratch folders, list nothing
+        self.verdicts = Path(tempfile.mkdtemp(prefix="verdicts-", dir=self.work))  # 0700: the judge's only
+        self.sandbox = sandbox
+        self.isolation_checked = False
+        # Pictures of failed image tests (the student's render, the reference,
+        # a z-score map), written by the judge next to results.json.
+        out = Path(args.out).resolve()
+        self.pictures = out.parent / f"{out.stem}-images"
+        if self.pictures.is_dir():
+            for old in self.pictures.glob("*.png"):
+                old.unlink()
+
+    def record(self, task, name, score, points, output, status=None, visibility="visible", timing=None):
+        """timing: (seconds the test took, its time limit), for a test that ran."""
+        self.total += score
+        result = {
+            "name": f"Task {task}: {name}",
+            "score": score,
+            "max_score": points,
+            "status": status or ("passed" if score >= points else "failed"),
+            "output": clip(output),
+            "visibility": visibility,
+        }
+        if timing:  # Gradescope keeps extra_data without showing it; tools/check shows it
+            result["extra_data"] = {"seconds": round(timing[0], 2), "time_limit": round(timing[1], 2)}
+        self.results.append(result)
+
+    def manifest(self, task):
+        """(name, points, visibility) of task's test cases, from the judge's own listing."""
+        directory, _ = TASKS[task]
+        code, listing = run([str(self.build / "tests" / f"test-{directory}"), "--list-test-cases"], timeout=60)
+        cases = [(m.group(3), int(m.group(1)), m.group(2))
+                 for m in re.finditer(r"^TEST (\d+) (\w+) (.*)$", listing, re.M)]
+        if not cases:
+            raise RuntimeError(f"the judge test-{directory} listed no test cases:\n{clip(listing, 2000)}")
+        return cases
+
+    def prepare_sandbox(self):
+        """uid mode: pathlab-confine (no sockets, no IPC) where the sandbox uid
+        can run it, and the world-writable folders closed to that uid."""
+        if self.sandbox.mode == "uid" and self.sandbox.root:
+            ok, out = self.build_target("pathlab-confine")
+            binary = self.build / "tools" / "confine" / "pathlab-confine"
+            if ok and binary.exists():
+                folder = self.work / "confine"
+                folder.mkdir()
+                os.chmod(folder, 0o755)
+                shutil.copy(binary, folder / binary.name)
+                os.chmod(folder / binary.name, 0o755)
+                self.sandbox.confine = str(folder / binary.name)
+                code, out = run(self.sandbox.command(["/bin/true"], scratch=None), timeout=20)
+                if code != 0:  # a container that forbids seccomp filters too
+                    self.sandbox.confine = None
+                    self.sandbox.warning += ("; seccomp filters are not allowed here, so the candidate may open "
+                                             "sockets and System V IPC: " + clip(out, 300))
+            else:
+                self.sandbox.warning += ("; pathlab-confine was not built (install libseccomp-dev), so the "
+                                         "candidate may open sockets and System V IPC")
+        self.sandbox.deny_shared_folders()
+
+    def check_isolation(self, judge: Path):
+        """The sandbox must not reach the reference, the suites or the judge,
+        nor (uid mode, pathlab-confine) open a socket."""
+        self.isolation_checked = True
+        if self.sandbox.mode == "none":
+            return
+        if self.sandbox.confine:  # (bubblewrap: a network namespace of its own)
+            code, out = run(self.sandbox.command(["/usr/bin/python3", "-c", "import socket; socket.socket()"],
+                                                 scratch=None), timeout=20)
+            if code == 0:
+                raise RuntimeError("isolation check failed: code in the sandbox can open a socket")
+        secrets = [ROOT / "solutions" / "01-camera-rays" / "camera_rays.cpp", ROOT / "tests" / "support" / "listener.cpp",
+                   judge]
+        readable = [p for p in secrets if p.exists() and self.sandbox.can_read(p)]
+        if readable:
+            raise RuntimeError(f"isolation check failed: code in the sandbox can read {readable[0]}")
+
+    def fail_all(self, task, cases, message):
+        for name, points, visibility in cases:
+            self.record(task, name, 0, points, message, visibility=visibility)
+
+    def configure(self):
+        sanitize = [f"-DPATHLAB_SANITIZE={self.args.sanitize}", "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -g1"] \
+            if self.args.sanitize else []
+        self.objects.mkdir(parents=True, exist_ok=True)
+        # The "grade" preset (CMakePresets.json), in this grade's build folder.
+        code, out = run(["cmake", "--preset", "grade", "-B", str(self.build),
+                         f"-DPATHLAB_SUBMISSION_OBJECTS={self.objects}", *sanitize], cwd=ROOT)
+        if code != 0:
+            raise RuntimeError("configuring the grader's build failed:\n" + clip(out))
+
+    def build_target(self, target):
+        code, out = run(["cmake", "--build", str(self.build), "--target", target,
+                         "--parallel", str(os.cpu_count() or 2)])
+        return code == 0, out
+
+    def watch(self):
+        """The submission's memory limit, over all its processes (pathlab_sandbox.MemoryWatch)."""
+        return MemoryWatch(self.sandbox.root and self.sandbox.mode in ("bwrap", "uid"))
+
+    def compile_in_sandbox(self, task, source: Path, deadline: float):
+        """The student's file compiled in the sandbox: (object path or None, message).
+        Compiling counts against the task's time budget (`deadline`)."""
+        directory, file_name = TASKS[task]
+        if source.stat().st_size > MAX_TASK_FILE:
+            return None, f"{file_name} is larger than {MAX_TASK_FILE >> 20} MB"
+        scratch = Path(tempfile.mkdtemp(prefix=f"compile-{task}-", dir=self.work))
+        os.chmod(scratch, 0o755)
+        for layer in LAYERS:  # the framework's headers, by layer, as the build's include folder has them
+            (scratch / "include" / layer).mkdir(parents=True)
+            for header in (ROOT / "framework" / layer).glob("*.h"):
+                shutil.copyfile(header, scratch / "include" / layer / header.name)
+        task_dir = scratch / "tasks" / directory
+        task_dir.mkdir(parents=True)
+        shutil.copyfile(source, task_dir / file_name)
+        out = scratch / "out"
+        out.mkdir()
+        self.sandbox.give(out)
+        inside = lambda p: self.sandbox.path(scratch, p)
+        skip = False
+        compiler, *arguments = compile_command(self.build, task)
+        command = [os.path.realpath(shutil.which(compiler) or compiler)]  # /usr/bin/c++ is a link into /etc
+        for arg in arguments:
+            if skip:
+                skip = False
+                continue
+            if arg in ("-o", "-c", "-MF", "-MT", "-MQ"):
+                skip = True
+                continue
+            if arg in ("-MD", "-MMD"):
+                continue
+            if arg.startswith("-I"):
+                arg = "-I" + inside(scratch / "include")
+            if arg.startswith("-fmacro-prefix-map="):
+                arg = f"-fmacro-prefix-map={inside(scratch)}/="
+            command.append(arg)
+        command += pathlab_tasks.SUBMISSION_FLAGS
+        source_inside = inside(task_dir / file_name)
+        limits = dict(writable=out, cpu_seconds=120)
+
+        def step(arguments, longest):
+            """One compiler run, within the time left; (exit code, output, why it stopped or "")."""
+            left = min(longest, deadline - time.time())
+            if left < 1:
+                return None, "", "the time budget was used up before compiling finished"
+            with self.watch() as watch:
+                code, output = run(self.sandbox.command(arguments, scratch, **limits), timeout=left)
+            if watch.exceeded:
+                return None, output, "compiling " + watch.message()
+            if code is None:
+                return None, output, (f"compiling took longer than {left:.0f} s" +
+                                      (" (the time budget)" if left < longest else ""))
+            return code, output, ""
+
+        # 1. The preprocessor alone: which files does the source read? Asked of
+        # the compiler, so no spelling (digraphs, line splices, macros that
+        # build a path) escapes. Only the framework's headers and the
+        # compiler's own may be read; until that is known nothing the
+        # preprocessor printed is shown (a diagnostic quotes the file it is about).
+        # (-M -MG: a header that does not exist is listed too, as the path the
+        # source asked for, so a path outside is refused even where it is missing.)
+        code, output, stopped = step(
+            command + ["-H", "-M", "-MG", "-MF", self.sandbox.out_path(out, out / "task.d"), source_inside], 150)
+        if stopped:
+            return None, f"{file_name} was not compiled: {stopped}."
+        # Compared resolved: clang names its headers /usr/bin/../lib/gcc/...; a link
+        # inside an allowed folder must not lead out of it.
+        resolved = lambda f: os.path.normpath(f) if f.startswith("/sandbox/") else canonical(f)
+        allowed = tuple(self.system_dirs(command[0], arguments)) + tuple(
+            resolved(inside(folder)) + os.sep for folder in (scratch / "include", task_dir))
+        outside = sorted({f for f in files_read(output, out / "task.d")
+                          if f != source_inside and not resolved(f).startswith(allowed)})
+        if outside:
+            shown = ", ".join(f.replace(f"{inside(scratch)}/", "") for f in outside[:3])
+            return None, (f"{file_name} includes files other than the framework's headers "
+                          f"({', '.join(layer + '/...' for layer in LAYERS)}) and the compiler's own, or files "
+                          f"that do not exist: {shown}. A task file may include only those headers.")
+        if code != 0:
+            return None, f"{file_name} did not compile:\n" + clip(re.sub(r"^\.+ .*\n?", "", output, flags=re.M)
+                                                                 .replace(f"{inside(scratch)}/", ""))
+
+        # 2. Compile to assembly (what the preprocessor read is allowed, so its
+        # diagnostics may be shown); inline assembly is refused: `.incbin` and
+        # its kin read files in the assembler, where no include check sees them.
+        asm = out / "task.s"
+        code, output, stopped = step(command + ["-S", source_inside, "-o", self.sandbox.out_path(out, asm)], 300)
+        output = output.replace(f"{inside(scratch)}/", "")
+        if stopped:
+            return None, f"{file_name} was not compiled: {stopped}.\n" + clip(output)
+        if code != 0 or not asm.exists():
+            return None, f"{file_name} did not compile:\n" + clip(output)
+        with open(asm, errors="replace") as text:
+            # GCC marks inline assembly #APP (ELF) or /APP (Windows), clang "InlineAsm Start".
+            if any(line.startswith(("#APP", "/APP")) or "InlineAsm Start" in line for line in text):
+                return None, f"{file_name} contains inline assembly (asm), which a task file may not use."
+
+        # 3. Assemble.
+        obj = out / "task.o"
+        code, output, stopped = step(
+            [command[0], "-c", self.sandbox.out_path(out, asm), "-o", self.sandbox.out_path(out, obj)], 120)
+        if stopped:
+            return None, f"{file_name} was not assembled: {stopped}."
+        if code != 0 or not obj.exists():
+            return None, f"{file_name} did not assemble:\n" + clip(output)
+        return obj, ""
+
+    def system_dirs(self, compiler, arguments):
+        if not hasattr(self, "_system_dirs"):
+            self._system_dirs = system_include_dirs(compiler, arguments)
+        return self._system_dirs
+
+    def grade_task(self, task, source, note, deadline):
+        directory, file_name = TASKS[task]
+        self.say(f"task {task}: building its judge (test-{directory}; a first build takes minutes)", progress=True)
+        ok, out = self.build_target(f"test-{directory}")
+        if not ok:
+            raise RuntimeError(f"building the judge test-{directory} failed:\n" + clip(out))
+        cases = self.manifest(task)
+        if not self.isolation_checked:
+            self.check_isolation(self.build / "tests" / f"test-{directory}")
+        if source is None:
+            self.say(f"task {task}: no {file_name} in the submission")
+            self.fail_all(task, cases, f"{file_name} was not found in the submission")
+            return
+        self.say(f"task {task}: grading {source}{note}")
+        task_deadline = min(deadline, time.time() + self.args.task_budget)  # compiling included
+        self.say(f"task {task}: compiling {file_name}", progress=True)
+        obj, message = self.compile_in_sandbox(task, source, task_deadline)
+        if obj is None:
+            self.fail_all(task, cases, message)
+            return
+        (self.objects / f"task-{task}.o").write_bytes(obj.read_bytes())
+        self.say(f"task {task}: linking", progress=True)
+        ok, out = self.build_target(f"candidate-{directory}-submission")
+        if not ok:
+            # The linker's own lines (the build's command lines name the grader's folders).
+            said = [l for l in out.splitlines() if re.search(r"undefined reference|multiple definition|ld: |error:", l)]
+            self.fail_all(task, cases, f"{file_name} did not link on its own (the reference for the other tasks, "
+                          "the framework): does it use a function written in another task's file?\n" +
+                          clip("\n".join(said) if said else out))
+            return
+        run_dir = Path(tempfile.mkdtemp(prefix=f"run-{task}-", dir=self.work))
+        os.chmod(run_dir, 0o755)
+        candidate = run_dir / ("candidate" + (".exe" if os.name == "nt" else ""))
+        shutil.copy(self.build / "tests" / f"candidate-{directory}-submission{candidate.suffix}", candidate)
+        cpu = max(10.0, self.args.timeout + 5)
+        command = self.sandbox.command([self.sandbox.path(run_dir, candidate)], run_dir, cpu_seconds=cpu)
+        launcher = candidate  # unsandboxed: the judge starts the candidate itself
+        if command != [str(candidate)]:
+            launcher = self.verdicts / f"launch-{task}"
+            launcher.write_text("#!/bin/sh\nexec " + shlex.join(command) + "\n")
+            launcher.chmod(0o700)
+        for index, (name, points, visibility) in enumerate(cases):
+            left = task_deadline - time.time()
+            if left < 1.0:
+                which = "submission's" if task_deadline >= deadline else f"task {task}'s"
+                budget = self.args.budget if task_deadline >= deadline else self.args.task_budget
+                self.record(task, name, 0, points, f"not run: the {which} time budget of {budget:g} s was used up "
+                            "by the tests before it", visibility=visibility)
+                continue
+            limit = min(self.args.timeout, left)
+            self.say(f"task {task}: running test {index + 1} of {len(cases)}", progress=True)
+            self.run_case(task, directory, name, points, visibility, index, launcher, limit)
+
+    def run_case(self, task, directory, name, points, visibility, index, launcher, limit):
+        verdict = self.verdicts / f"verdict-{task}-{index}"
+        env = {k: v for k, v in os.environ.items() if not k.startswith("PATHLAB_")}
+        env.update(PATHLAB_CANDIDATE=str(launcher), PATHLAB_VERDICT_FILE=str(verdict),
+                   PATHLAB_IMAGE_FAILURES_DIR=str(self.pictures))
+        escaped = "".join("\\" + c if c in ",\\" else ("?" if c in "*[]" else c) for c in name)
+        started = time.time()
+        with self.watch() as watch:
+            code, out = run([str(self.build / "tests" / f"test-{directory}"), f"--test-case={escaped}",
+                             "--no-version", "--no-intro"], timeout=limit, env=env)
+        timing = (time.time() - started, limit)
+        self.sandbox.clean_up()
+        out = out.replace(f"{self.pictures}/", f"{self.pictures.name}/")  # named beside results.json
+        lines = verdict.read_text().splitlines() if verdict.exists() else []
+        ran = [l for l in lines if l.startswith(("PASS ", "FAIL "))]
+        if watch.exceeded:
+            self.record(task, name, 0, points, watch.message() + "\n" + out, visibility=visibility, timing=timing)
+        elif code is None:
+            self.record(task, name, 0, points, f"timed out after {limit:g} s (an endless loop?)\n" + out,
+                        visibility=visibility, timing=timing)
+        elif len(ran) == 1 and lines[-1] == "END" and ran[0].startswith("PASS ") and code == 0:
+            self.record(task, name, points, points, "passed", visibility=visibility, timing=timing)
+        elif len(ran) == 1:
+            self.record(task, name, 0, points, out, visibility=visibility, timing=timing)
+        else:
+            self.record(task, name, 0, points, f"the test did not finish (judge exit code {code})\n" + out,
+                        visibility=visibility, timing=timing)
+
+    def finish(self):
+        report = {
+            "score": self.total,
+            "execution_time": round(time.time() - self.start, 1),
+            "output": f"{sum(r['score'] for r in self.results):g} of "
+                      f"{sum(r['max_score'] for r in self.results):g} points",
+            "tests": self.results,
+        }
+        if self.sandbox.warning:
+            report["output"] += "\n" + self.sandbox.warning
+        if self.notes:
+            report["output"] += "\nFrom the submitted archive:\n" + clip("\n".join(self.notes), 2000)
+        Path(self.args.out).write_text(json.dumps(report, indent=2))
+        failed = sum(1 for r in self.results if r["status"] != "passed")
+        self.say(f"{report['output'].splitlines()[0]}; {len(self.results) - failed} passed, {failed} failed; "
+                 f"wrote {self.args.out}")
+        points = sum(r["max_score"] for r in self.results)
+        if self.args.fail_under is not None and self.total < self.args.fail_under / 100.0 * points:
+            return 1
+        return 0
+
+    def grade(self, submission: Path, tasks) -> int:
+        """Grades `tasks` of a submission (a folder or a zip); always writes
+        results.json. Exit code: 0, 1 for a submission without task files
+        (or under --fail-under), 2 when the grader's own build or isolation failed."""
+        out_dir = Path(self.args.out).resolve().parent
+        try:
+            if self.sandbox.warning:
+                print(self.sandbox.warning, file=sys.stderr)
+            folder = submission
+            if submission.is_file():  # a zip, or something that was meant to be one
+                folder = self.work / "submission"
+                folder.mkdir()
+                self.notes += unpack_zip(submission, folder)
+            elif not submission.is_dir():
+                raise ValueError(f"submission {submission} is neither a folder nor a file")
+            found = find_task_files(folder)
+            if not any(t in found for t in tasks):
+                names = ", ".join(TASKS[t][1] for t in tasks)
+                raise ValueError(f"no task file found in {submission} (looked for {names})")
+            self.say("configuring the grader's build", progress=True)
+            self.configure()
+            self.sandbox.protect([ROOT, self.build, out_dir] if out_dir != Path("/") else [ROOT, self.build])
+            self.prepare_sandbox()
+            deadline = time.time() + self.args.budget
+            for task in tasks:
+                source, note = found.get(task, (None, ""))
+                self.grade_task(task, source, note, deadline)
+        except (ValueError, zipfile.BadZipFile, RuntimeError) as e:
+            # A submission without task files (1), or the grader's own build or isolation failing (2).
+            print(f"grade: {str(e).splitlines()[0]}", file=sys.stderr)
+            for task in tasks:
+                self.record(task, "submission", 0, 0, str(e))
+            self.finish()
+            return 2 if isinstance(e, RuntimeError) else 1
+        except Exception as e:  # noqa: BLE001 — whatever went wrong, the submission still gets a results.json
+            print(f"grade: the grader failed: {type(e).__name__}: {e}", file=sys.stderr)
+            for task in tasks:
+                self.record(task, "submission", 0, 0, f"the grader failed on this submission ({type(e).__name__}: "
+                            f"{str(e)[:300]}); please tell the course staff")
+            self.finish()
+            return 2
+        finally:
+            self.sandbox.restore()
+            self.sandbox.clean_up()
+            shutil.rmtree(self.work, ignore_errors=True)
+        return self.finish()
