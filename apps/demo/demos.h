@@ -37,6 +37,14 @@ struct Demo {
 // Every demo, in lecture order.
 const std::vector<Demo>& allDemos();
 
+// "--set samples=1000" settings, checked against the parameters and their
+// ranges (an Error names what is allowed); the rest keep their defaults.
+Values parseSettings(const std::string& owner, const std::vector<Parameter>& parameters,
+                     const std::vector<std::string>& settings);
+// Where -o OUT puts NAME's figure: a .png file as given; a folder (existing,
+// or ending in /) gets NAME.png; anything else is a prefix: OUT.png.
+std::string figurePath(const std::string& out, const std::string& name);
+
 // The demos' own numerics, exposed for tests.
 // The example density of demo 1 on [0, 2] and its CDF.
 double examplePdf(double x);

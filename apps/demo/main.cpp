@@ -18,52 +18,6 @@ namespace {
 
 using namespace pathlab;
 using namespace pathlab::demo;
-namespace fs = std::filesystem;
-
-// -o OUT: a .png file; a folder (existing, or ending in /) gets NAME.png;
-// anything else is a prefix: OUT.png.
-std::string outputPath(const std::string& out, const std::string& name) {
-  if (out.empty()) return name + ".png";
-  if (fs::path(out).extension() == ".png") return out;
-  std::error_code notFolder;
-  if (fs::is_directory(out, notFolder) || out.back() == '/') {
-    createFolders(out);
-    return (fs::path(out) / (name + ".png")).string();
-  }
-  return out + ".png";
-}
-
-// "--set samples=1000": checked against the demo's parameters and ranges.
-Values parseValues(const Demo& demo, const std::vector<std::string>& settings) {
-  Values values;
-  for (const Parameter& parameter : demo.parameters) values[parameter.name] = parameter.value;
-  for (const std::string& setting : settings) {
-    const size_t equals = setting.find('=');
-    const std::string name = setting.substr(0, equals);
-    const auto known = std::find_if(demo.parameters.begin(), demo.parameters.end(),
-                                    [&](const Parameter& p) { return p.name == name; });
-    if (equals == std::string::npos || known == demo.parameters.end()) {
-      std::string names;
-      for (const Parameter& p : demo.parameters) names += (names.empty() ? "" : ", ") + p.name;
-      throw Error("--set " + setting + ": " + demo.name + " has the parameters " + names + " (--set NAME=VALUE)");
-    }
-    double value = 0.0;
-    try {
-      size_t used = 0;
-      value = std::stod(setting.substr(equals + 1), &used);
-      if (used != setting.size() - equals - 1) throw std::invalid_argument("trailing characters");
-    } catch (const std::exception&) {
-      throw Error("--set " + setting + ": \"" + setting.substr(equals + 1) + "\" is not a number");
-    }
-    if (!(value >= known->min && value <= known->max)) {
-      throw Error("--set " + setting + ": " + name + " must be between " + std::to_string(known->min) + " and " +
-                  std::to_string(known->max));
-    }
-    values[name] = value;
-  }
-  return values;
-}
-
 int run(const std::string& name, const std::string& out, const std::vector<std::string>& settings, bool gui,
         const std::string& screenshot) {
   const std::vector<Demo>& demos = allDemos();
@@ -73,7 +27,7 @@ int run(const std::string& name, const std::string& out, const std::vector<std::
     for (const Demo& d : demos) names += (names.empty() ? "" : ", ") + d.name;
     throw Error("no demo \"" + name + "\" (demos: " + names + ")");
   }
-  const Values values = parseValues(*found, settings);
+  const Values values = parseSettings(found->name, found->parameters, settings);
   if (gui || !screenshot.empty()) {
 #ifdef PATHLAB_HAVE_GUI
     return runDemoWindow(*found, values, screenshot);
@@ -81,7 +35,7 @@ int run(const std::string& name, const std::string& out, const std::vector<std::
     throw Error("--gui: this build has no window (install libglfw3-dev and libimgui-dev, then rebuild)");
 #endif
   }
-  const std::string path = outputPath(out, name);
+  const std::string path = figurePath(out, name);
   if (!isWritableImagePath(path)) throw Error("-o " + out + ": use a .png file, a folder or a prefix");
   const auto start = std::chrono::steady_clock::now();
   const DemoResult result = found->run(values);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "debug/debug_views.h"
+#include "lab_cli.h"
 #include "render/render.h"
 #include "scene/scene_io.h"
 #include "util/error.h"
@@ -270,6 +271,10 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel, std::atomic<b
   debugCommand->add_option("-t,--threads", debug.threads, "Threads (default: all cores)");
   debugCommand->add_flag("--list", debug.list, "List every task's views");
 
+  lab::LabArgs labArgs;
+  CLI::App* labCommand = app.add_subcommand("lab", "The sampling lab: a warp's samples against its pdf, chi-square, figure");
+  lab::addLabOptions(*labCommand, labArgs);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -284,6 +289,7 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel, std::atomic<b
   }
   try {
     if (debugCommand->parsed()) return runDebug(debug);
+    if (labCommand->parsed()) return lab::runLab(labArgs);
     return runRender(render, cancel, rendering);
   } catch (const Error& e) {
     printError("pathlab", e.what());

@@ -1,0 +1,413 @@
+// The sampling lab's test and figure: draw, bin, integrate the pdf over the
+// same bins, chi-square, and the five pictures (lab.h).
+#include "lab.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "demo_support.h"
+#include "util/error.h"
+#include "util/image.h"
+#include "util/random.h"
+
+namespace pathlab::lab {
+
+using demo::Figure;
+using demo::format;
+using demo::Plot;
+using demo::Series;
+using demo::Values;
+
+namespace {
+
+constexpr int kIntervalBins = 50;
+constexpr int kPlaneCells = 40;      // per side
+constexpr int kPlaneSubdivision = 32;  // midpoints per cell side for the expected counts (sharp edges)
+constexpr int kShownPoints = 4000;    // points drawn in the scatter
+constexpr double kPi = std::numbers::pi;
+
+// Where a point is drawn: (x, y) of the scatter and the grid lines.
+// The sphere is shown as its equal-area map: (phi, cos theta).
+Vec2 shownAt(Domain domain, const Vec3& p, Vec2 u) {
+  switch (domain) {
+    case Domain::Interval: return {p.x, u.x};  // x against the u that made it: the inverse CDF
+    case Domain::Plane: return {p.x, p.y};
+    case Domain::Sphere: return {std::atan2(p.y, p.x), p.z};
+    case Domain::Discrete: return {p.x, u.x};
+  }
+  return {0.0f, 0.0f};
+}
+
+// The bins of a domain: cell index of a point (-1: outside), the expected
+// count of every cell for n samples, and the cells' shape for pictures.
+struct Bins {
+  int columns = 1, rows = 1;
+  std::vector<double> counts;
+};
+
+int cellOf(Domain domain, const WarpSetup& setup, const Vec3& p) {
+  switch (domain) {
+    case Domain::Interval: {
+      const double t = (double(p.x) - setup.lo.x) / (double(setup.hi.x) - setup.lo.x);
+      if (!(t >= 0.0 && t <= 1.0)) return -1;
+      return std::min(kIntervalBins - 1, int(t * kIntervalBins));
+    }
+    case Domain::Plane: {
+      const double tx = (double(p.x) - setup.lo.x) / (double(setup.hi.x) - setup.lo.x);
+      const double ty = (double(p.y) - setup.lo.y) / (double(setup.hi.y) - setup.lo.y);
+      if (!(tx >= 0.0 && tx <= 1.0 && ty >= 0.0 && ty <= 1.0)) return -1;
+      return std::min(kPlaneCells - 1, int(ty * kPlaneCells)) * kPlaneCells + std::min(kPlaneCells - 1, int(tx * kPlaneCells));
+    }
+    case Domain::Discrete: {
+      const int k = int(p.x);
+      return float(k) == p.x && k >= 0 && k < int(setup.outcomes.size()) ? k : -1;
+    }
+    case Domain::Sphere: return DirectionHistogram::cellOf(p);
+  }
+  return -1;
+}
+
+// The pdf integrated over every cell, times n (midpoint rule on a sub-grid).
+std::vector<double> expectedCounts(const WarpSetup& setup, double n) {
+  switch (setup.domain) {
+    case Domain::Sphere: return DirectionHistogram::expected(setup.pdf, n, setup.sphereSubdivision);
+    case Domain::Discrete: {
+      std::vector<Vec3> outcomes;
+      for (size_t k = 0; k < setup.outcomes.size(); ++k) outcomes.emplace_back(float(k), 0.0f, 0.0f);
+      std::vector<double> p = setup.pdf(outcomes);
+      for (double& v : p) v *= n;
+      return p;
+    }
+    case Domain::Interval: {
+      constexpr int kSub = 64;
+      const double width = (double(setup.hi.x) - setup.lo.x) / kIntervalBins;
+      std::vector<Vec3> points;
+      for (int b = 0; b < kIntervalBins; ++b)
+        for (int s = 0; s < kSub; ++s) points.emplace_back(float(setup.lo.x + (b + (s + 0.5) / kSub) * width), 0.0f, 0.0f);
+      const std::vector<double> pdf = setup.pdf(points);
+      std::vector<double> result(kIntervalBins, 0.0);
+      for (size_t i = 0; i < pdf.size(); ++i) result[i / kSub] += n * pdf[i] * width / kSub;
+      return result;
+    }
+    case Domain::Plane: {
+      const double w = (double(setup.hi.x) - setup.lo.x) / kPlaneCells, h = (double(setup.hi.y) - setup.lo.y) / kPlaneCells;
+      std::vector<Vec3> points;
+      for (int j = 0; j < kPlaneCells; ++j)
+        for (int i = 0; i < kPlaneCells; ++i)
+          for (int sj = 0; sj < kPlaneSubdivision; ++sj)
+            for (int si = 0; si < kPlaneSubdivision; ++si)
+              points.emplace_back(float(setup.lo.x + (i + (si + 0.5) / kPlaneSubdivision) * w),
+                                  float(setup.lo.y + (j + (sj + 0.5) / kPlaneSubdivision) * h), 0.0f);
+      const std::vector<double> pdf = setup.pdf(points);
+      std::vector<double> result(kPlaneCells * kPlaneCells, 0.0);
+      const size_t perCell = kPlaneSubdivision * kPlaneSubdivision;
+      for (size_t i = 0; i < pdf.size(); ++i) result[i / perCell] += n * pdf[i] * w * h / double(perCell);
+      return result;
+    }
+  }
+  return {};
+}
+
+// Pixels per cell: about 200 pixels a side, whatever the cell count.
+int pixelsPerCell(int cells) { return std::max(1, 200 / cells); }
+
+// A density picture of a grid of cells (row 0 of `values` at the bottom of
+// the picture, as the plots' y axes run): white 0 to dark blue `top`.
+Image densityPicture(const std::vector<double>& values, int columns, int rows, double top) {
+  const int kScale = pixelsPerCell(columns), kScaleY = pixelsPerCell(rows);
+  Image image(columns * kScale, rows * kScaleY);
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      const float t = top > 0.0 ? float(std::clamp(values[size_t(j * columns + i)] / top, 0.0, 1.0)) : 0.0f;
+      const Color c = glm::mix(Color(1.0f), Color(0.02f, 0.06f, 0.35f), t);
+      for (int y = 0; y < kScaleY; ++y)
+        for (int x = 0; x < kScale; ++x) image.at(i * kScale + x, (rows - 1 - j) * kScaleY + y) = c;
+    }
+  return image;
+}
+
+// (observed - expected) / sqrt(expected): red too many, blue too few, full at |z| = 5.
+Image differencePicture(const std::vector<double>& observed, const std::vector<double>& expected, int columns,
+                        int rows) {
+  std::vector<double> z(observed.size(), 0.0);
+  for (size_t i = 0; i < z.size(); ++i) {
+    z[i] = expected[i] > 0.0 ? (observed[i] - expected[i]) / std::sqrt(expected[i]) : (observed[i] > 0.0 ? 5.0 : 0.0);
+  }
+  const int kScale = pixelsPerCell(columns), kScaleY = pixelsPerCell(rows);
+  Image image(columns * kScale, rows * kScaleY);
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      const float t = float(std::clamp(z[size_t(j * columns + i)] / 5.0, -1.0, 1.0));
+      const Color c = t >= 0.0f ? glm::mix(Color(1.0f), Color(0.75f, 0.02f, 0.02f), t)
+                                : glm::mix(Color(1.0f), Color(0.02f, 0.1f, 0.75f), -t);
+      for (int y = 0; y < kScaleY; ++y)
+        for (int x = 0; x < kScale; ++x) image.at(i * kScale + x, (rows - 1 - j) * kScaleY + y) = c;
+    }
+  return image;
+}
+
+Series imageSeries(Image image, std::string label) {
+  Series s;
+  s.kind = Series::Kind::Image;
+  s.image = std::move(image);
+  s.label = std::move(label);
+  return s;
+}
+
+Series barsOf(std::vector<double> y, std::string label) {
+  Series s;
+  s.kind = Series::Kind::Bars;
+  s.y = std::move(y);
+  s.label = std::move(label);
+  return s;
+}
+
+const char* sequenceName(SampleSequence sequence) {
+  switch (sequence) {
+    case SampleSequence::Independent: return "independent";
+    case SampleSequence::Stratified: return "stratified";
+    case SampleSequence::Sobol: return "Sobol";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::vector<demo::Parameter> parametersOf(const Warp& warp) {
+  std::vector<demo::Parameter> parameters = {
+      {"samples", 100000, 1000, 4e6, true, true, "points drawn"},
+      {"sequence", 0, 0, 2, true, false, "0 independent, 1 stratified, 2 Sobol (the test assumes independent)"},
+      {"seed", 1, 0, 1e6, true, false, "random seed"},
+      {"grid", 10, 2, 40, true, false, "lines per side of the warped grid"}};
+  parameters.insert(parameters.end(), warp.parameters.begin(), warp.parameters.end());
+  return parameters;
+}
+
+const Warp* findWarp(const std::string& name) {
+  const std::vector<Warp>& warps = allWarps();
+  const auto found = std::find_if(warps.begin(), warps.end(), [&](const Warp& w) { return w.name == name; });
+  return found == warps.end() ? nullptr : &*found;
+}
+
+LabResult runWarp(const Warp& warp, const Values& values) {
+  const WarpSetup setup = warp.setup(values);
+  const int n = demo::count(values, "samples"), gridLines = demo::count(values, "grid");
+  const auto sequence = SampleSequence(demo::count(values, "sequence"));
+  const uint64_t seed = uint64_t(demo::count(values, "seed"));
+  LabResult result;
+
+  // Draw and bin.
+  Bins bins;
+  if (setup.domain == Domain::Interval) bins.columns = kIntervalBins;
+  if (setup.domain == Domain::Plane) bins.columns = bins.rows = kPlaneCells;
+  if (setup.domain == Domain::Discrete) bins.columns = int(setup.outcomes.size());
+  if (setup.domain == Domain::Sphere) bins.columns = DirectionHistogram::kPhi, bins.rows = DirectionHistogram::kCos;
+  bins.counts.assign(size_t(bins.columns * bins.rows), 0.0);
+  std::vector<double> shownX, shownY;
+  std::vector<Vec3> drawn;  // every binned sample, for its own pdf
+  std::vector<int> drawnCell;
+  drawn.reserve(size_t(n)), drawnCell.reserve(size_t(n));
+  for (int i = 0; i < n; ++i) {
+    Sampler sampler(0, uint32_t(i), seed, sequence, uint32_t(n));
+    const Vec2 u = sampler.next2D();
+    const std::optional<Vec3> p = setup.sample(u);
+    if (!p) {
+      ++result.noSample;
+      continue;
+    }
+    if (i < kShownPoints) {
+      const Vec2 at = shownAt(setup.domain, *p, u);
+      shownX.push_back(at.x), shownY.push_back(at.y);
+    }
+    const int cell = cellOf(setup.domain, setup, *p);
+    if (cell < 0) {
+      ++result.outside;
+      continue;
+    }
+    bins.counts[size_t(cell)] += 1.0;
+    drawn.push_back(*p), drawnCell.push_back(cell);
+  }
+
+  // The pdf over the same bins, and the test. A sample with no pdf to match
+  // (none drawn, or outside the domain) fails it outright.
+  const std::vector<double> expected = expectedCounts(setup, double(n));
+  double total = 0.0;
+  for (double e : expected) total += e;
+  result.pdfIntegral = total / double(n);
+  // A sample in a cell the pdf says holds nothing is a hard failure (as in
+  // the suites) when the sample's own pdf is 0 there too. A cell whose
+  // midpoints all missed a sharp edge of the pdf, hit by samples with a
+  // positive pdf, is the integration's rounding: pooled with the sparse cells.
+  const std::vector<double> drawnPdf = setup.pdf(drawn);
+  int zeroPdf = 0;
+  std::vector<double> tested = expected;
+  for (size_t k = 0; k < drawn.size(); ++k) {
+    const size_t cell = size_t(drawnCell[k]);
+    if (expected[cell] > 0.0) continue;
+    if (drawnPdf[k] > 0.0) {
+      tested[cell] = 1e-12;
+    } else {
+      ++zeroPdf;
+    }
+  }
+  result.test = chiSquareTest(bins.counts, tested);
+  if (drawn.empty()) {
+    result.test.failure = "no sample to test";
+  } else if (zeroPdf > 0) {
+    result.test.failure = format("%d samples landed where the pdf is 0 (their own pdf is 0 too)", zeroPdf);
+  } else if (result.test.degreesOfFreedom < 1) {
+    // Every sample in one cell, where the pdf puts all of it (a mirror, total
+    // internal reflection, one lit pixel): nothing more to test.
+    result.test.failure.clear();
+    result.test.pValue = 1.0;
+  }
+  if (result.outside > 0) result.test.failure = format("%d samples landed outside the domain", result.outside);
+  result.accepted = result.test.failure.empty() && result.test.pValue > kSignificance &&
+                    std::abs(result.pdfIntegral - 1.0) < 1e-2 && result.noSample == 0;
+
+  // The figure: samples, the warped grid, histogram, pdf, difference.
+  const bool sphereMap = setup.domain == Domain::Sphere;
+  const std::string xLabel = sphereMap ? "phi" : "x", yLabel = sphereMap ? "cos theta" : (setup.domain == Domain::Plane ? "y" : "u");
+  Plot points{format("%d of %d samples (%s)", std::min(n, kShownPoints), n, sequenceName(sequence)), xLabel, yLabel,
+              false, false, setup.domain == Domain::Plane, {}, {}};
+  points.series.push_back(demo::scatter(shownX, shownY, ""));
+  std::vector<Plot> plots = {points};
+  if (setup.domain == Domain::Plane || setup.domain == Domain::Sphere) {
+    // The lines u.x = const and u.y = const of the unit square, warped: a
+    // fold-over or a seam shows as a line that crosses or jumps.
+    Plot grid{"the unit square's grid, warped", xLabel, yLabel, false, false, setup.domain == Domain::Plane, {}, {}};
+    constexpr int kSteps = 64;
+    for (int along = 0; along < 2; ++along)
+      for (int k = 0; k <= gridLines; ++k) {
+        std::vector<double> xs, ys;
+        auto flush = [&] {
+          if (xs.size() > 1) grid.series.push_back(demo::line(xs, ys, ""));
+          xs.clear(), ys.clear();
+        };
+        for (int s = 0; s <= kSteps; ++s) {
+          const float a = std::min(float(k) / float(gridLines), 0.99999f), b = std::min(float(s) / kSteps, 0.99999f);
+          const Vec2 u = along == 0 ? Vec2(a, b) : Vec2(b, a);
+          const std::optional<Vec3> p = setup.sample(u);
+          if (!p) {
+            flush();
+            continue;
+          }
+          const Vec2 at = shownAt(setup.domain, *p, u);
+          if (!xs.empty() && sphereMap && std::abs(at.x - xs.back()) > kPi) flush();  // across the phi seam
+          xs.push_back(at.x), ys.push_back(at.y);
+        }
+        flush();
+      }
+    plots.push_back(grid);
+    double top = 0.0;
+    for (double e : expected) top = std::max(top, e);
+    for (double o : bins.counts) top = std::max(top, 0.5 * o);  // a spike over the pdf still shows
+    Plot observedPlot{"histogram of the samples", "", "", false, false, false, {}, {}};
+    observedPlot.series.push_back(imageSeries(densityPicture(bins.counts, bins.columns, bins.rows, top), ""));
+    Plot expectedPlot{"the pdf integrated over each cell", "", "", false, false, false, {}, {}};
+    expectedPlot.series.push_back(imageSeries(densityPicture(expected, bins.columns, bins.rows, top), ""));
+    Plot difference{"difference (red: too many, blue: too few; full at 5 sigma)", "", "", false, false, false, {}, {}};
+    difference.series.push_back(imageSeries(differencePicture(bins.counts, expected, bins.columns, bins.rows), ""));
+    plots.insert(plots.end(), {observedPlot, expectedPlot, difference});
+  } else {
+    Plot compare{"observed against the integrated pdf", setup.domain == Domain::Discrete ? "outcome" : "x", "count",
+                 false, false, false, {}, {}};
+    if (setup.domain == Domain::Discrete) {
+      compare.categories = setup.outcomes;
+      compare.series = {barsOf(expected, "expected"), barsOf(bins.counts, "observed")};
+    } else {
+      const double width = (double(setup.hi.x) - setup.lo.x) / kIntervalBins;
+      Series histogram;
+      histogram.kind = Series::Kind::Histogram;
+      histogram.label = "observed";
+      histogram.x = demo::linspace(setup.lo.x, setup.hi.x, kIntervalBins + 1);
+      histogram.y = bins.counts;
+      std::vector<double> centres;
+      for (int b = 0; b < kIntervalBins; ++b) centres.push_back(setup.lo.x + (b + 0.5) * width);
+      compare.series = {histogram, demo::line(centres, expected, "the pdf, integrated over each bin")};
+    }
+    std::vector<double> z;
+    for (size_t i = 0; i < expected.size(); ++i) {
+      z.push_back(expected[i] > 0.0 ? (bins.counts[i] - expected[i]) / std::sqrt(expected[i]) : 0.0);
+    }
+    Plot difference{"(observed - expected) / sqrt(expected)", setup.domain == Domain::Discrete ? "outcome" : "bin",
+                    "sigma", false, false, false, setup.domain == Domain::Discrete ? setup.outcomes : std::vector<std::string>{}, {}};
+    difference.series.push_back(barsOf(z, ""));
+    plots.insert(plots.end(), {compare, difference});
+  }
+  result.shown.figure = Figure{warp.name + " (" + warp.task + "): " + warp.summary, plots};
+
+  // The numbers, and what a rejection usually means.
+  std::ostringstream numbers;
+  numbers << format("%s: %d samples (%s), seed %llu\n", warp.name.c_str(), n, sequenceName(sequence),
+                    static_cast<unsigned long long>(seed));
+  numbers << format("pdf integrates to %.5f over the domain%s\n", result.pdfIntegral,
+                    std::abs(result.pdfIntegral - 1.0) < 1e-2 ? "" : " (not 1: the pdf is not normalised)");
+  if (result.noSample > 0) numbers << format("%d draws returned no sample\n", result.noSample);
+  if (!result.test.failure.empty()) {
+    numbers << "chi-square: " << result.test.failure << "\n";
+  } else {
+    numbers << (result.test.degreesOfFreedom < 1
+                    ? std::string("every sample in one cell, where the pdf puts all of it: nothing more to test\n")
+                    : format("chi-square %.1f with %d degrees of freedom (after pooling sparse cells): p = %.3g\n",
+                             result.test.statistic, result.test.degreesOfFreedom, result.test.pValue));
+  }
+  numbers << (result.accepted ? "ACCEPTED" : "REJECTED")
+          << format(": the samples %s the pdf (significance %g%s)\n", result.accepted ? "match" : "do not match",
+                    kSignificance, sequence == SampleSequence::Independent ? "" : "; stratified or Sobol points are "
+                    "more even than the test assumes, so it rejects less often");
+  if (!result.accepted) numbers << "usually: " << setup.mismatchMeans << "\n";
+  result.shown.numbers = numbers.str();
+
+  // CSV: one line per cell.
+  std::ostringstream csv;
+  csv << "cell,column,row,observed,expected\n";
+  for (size_t i = 0; i < expected.size(); ++i) {
+    csv << i << "," << int(i) % bins.columns << "," << int(i) / bins.columns << "," << bins.counts[i] << ","
+        << expected[i] << "\n";
+  }
+  result.csv = csv.str();
+  return result;
+}
+
+// pathlab lab WARP: the sampling lab headless (apps/demo/lab.h).
+int runLab(const LabArgs& args) {
+  if (args.list) {
+    for (const Warp& warp : allWarps()) {
+      std::printf("%-20s %-5s %s\n", warp.name.c_str(), warp.task.c_str(), warp.summary.c_str());
+    }
+    return 0;
+  }
+  if (args.warp.empty()) throw Error("lab: give a warp (pathlab lab --list shows them)");
+  const Warp* warp = findWarp(args.warp);
+  if (!warp) {
+    std::string names;
+    for (const Warp& w : allWarps()) names += (names.empty() ? "" : ", ") + w.name;
+    throw Error("lab: no warp \"" + args.warp + "\" (warps: " + names + ")");
+  }
+  const demo::Values values = demo::parseSettings(warp->name, parametersOf(*warp), args.settings);
+  if (args.params) {
+    for (const demo::Parameter& p : parametersOf(*warp)) {
+      std::printf("%-10s %-8g [%g, %g]  %s\n", p.name.c_str(), p.value, p.min, p.max, p.help.c_str());
+    }
+    return 0;
+  }
+  const std::string figure = args.noFigure ? "" : demo::figurePath(args.output, "lab-" + warp->name);
+  if (!figure.empty() && !isWritableImagePath(figure)) throw Error("-o " + args.output + ": use a .png file, a folder or a prefix");
+  const LabResult result = runWarp(*warp, values);
+  if (!figure.empty()) demo::writeFigure(result.shown.figure, figure);
+  if (!args.csv.empty()) {
+    std::ofstream csv(args.csv);
+    csv << result.csv;
+    if (!csv) throw Error("--csv " + args.csv + ": cannot write it");
+  }
+  if (!figure.empty()) std::printf("%s\n", figure.c_str());
+  std::printf("%s", result.shown.numbers.c_str());
+  return 0;
+}
+
+}  // namespace pathlab::lab

@@ -1,0 +1,81 @@
+// The sampling lab: every warp the tasks ask for (and the recitation's own
+// examples), drawn and tested against its own pdf. A warp maps uniform
+// points u in [0, 1)^2 to a domain (an interval, a square, the sphere, or a
+// few discrete outcomes) and claims a density there; the lab draws N points
+// (independent, stratified or Sobol), bins them, integrates the pdf over the
+// same bins, and runs the suites' chi-square test (util/chi_square.h) on the
+// two. `pathlab lab WARP` writes the figure; the GUI's lab panel redraws it live.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "demos.h"
+#include "util/chi_square.h"
+#include "util/math.h"
+
+namespace pathlab::lab {
+
+enum class Domain {
+  Interval,  // a point is x in [lo.x, hi.x] (point.x); pdf per unit length
+  Plane,     // (x, y) in [lo, hi] (point.x, point.y); pdf per unit area
+  Sphere,    // a unit direction; pdf per unit solid angle
+  Discrete,  // outcome k = point.x in 0 .. outcomes - 1; pdf = its probability
+};
+
+// One warp, set up for one choice of its parameters.
+struct WarpSetup {
+  Domain domain = Domain::Plane;
+  Vec2 lo{0.0f}, hi{1.0f};
+  std::vector<std::string> outcomes;  // Discrete: the outcomes' names
+  // The warp of u; nothing when the sampler returns no sample.
+  std::function<std::optional<Vec3>(Vec2 u)> sample;
+  // Its claimed density at many points at once (a student's pdf function).
+  std::function<std::vector<double>(const std::vector<Vec3>&)> pdf;
+  int sphereSubdivision = 8;  // midpoints per cell side for the expected counts (32 for piecewise-constant maps)
+  std::string mismatchMeans;  // what a rejection usually means, for this warp
+};
+
+struct Warp {
+  std::string name;
+  std::string task;     // "T5.1", ... or "seed" for the recitation's examples
+  std::string summary;  // one line for --list
+  std::vector<demo::Parameter> parameters;  // besides the common ones (samples, sequence, seed, grid)
+  std::function<WarpSetup(const demo::Values&)> setup;
+};
+
+// Every warp, in task order, the recitation's examples first.
+const std::vector<Warp>& allWarps();
+const Warp* findWarp(const std::string& name);
+
+// The common parameters every warp has, then its own.
+std::vector<demo::Parameter> parametersOf(const Warp& warp);
+
+// The significance level of the lab's verdict: a correct warp with
+// independent samples is rejected in 1 run in 1000.
+constexpr double kSignificance = 1e-3;
+
+struct LabResult {
+  demo::DemoResult shown;  // the figure and its numbers
+  ChiSquareResult test;
+  double pdfIntegral = 0.0;  // the claimed pdf integrated over the domain (should be 1)
+  int noSample = 0, outside = 0;
+  bool accepted = false;
+  std::string csv;  // cell, position, observed, expected: one line per cell
+};
+
+LabResult runWarp(const Warp& warp, const demo::Values& values);
+
+// `pathlab lab` (lab_cli.h has its options).
+struct LabArgs {
+  std::string warp, output, csv;
+  std::vector<std::string> settings;
+  bool list = false, params = false, noFigure = false;
+};
+// Prints the verdict and its numbers; writes the figure and the CSV. Returns
+// 0 (whatever the verdict: it is printed); throws pathlab::Error on bad input.
+int runLab(const LabArgs& args);
+
+}  // namespace pathlab::lab

@@ -1,0 +1,168 @@
+// Pearson's chi-square goodness-of-fit test, with pooling of sparse cells
+// (as Mitsuba 3 and pbrt-v4 test their samplers), and the histogram of unit
+// directions it is used on. One copy for everyone who asks "does this
+// sampler draw what its pdf says?": the task suites (tests/support/
+// statistics.h), the sampling lab (pathlab lab, the GUI's lab panel) and the
+// lecture demos, so that the lab and the grade can never disagree.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "util/math.h"
+
+namespace pathlab {
+
+// Regularised upper incomplete gamma Q(a, x) (Numerical Recipes 6.2).
+inline double upperIncompleteGamma(double a, double x) {
+  if (x <= 0.0) return 1.0;
+  const double lnGammaA = std::lgamma(a);
+  if (x < a + 1.0) {  // series for P, then Q = 1 - P
+    double sum = 1.0 / a, term = sum;
+    for (int n = 1; n < 10000; ++n) {
+      term *= x / (a + n);
+      sum += term;
+      if (std::abs(term) < std::abs(sum) * 1e-15) break;
+    }
+    return 1.0 - sum * std::exp(-x + a * std::log(x) - lnGammaA);
+  }
+  // Continued fraction for Q (modified Lentz).
+  double b = x + 1.0 - a, c = 1.0 / 1e-300, d = 1.0 / b, h = d;
+  for (int i = 1; i < 10000; ++i) {
+    const double an = -i * (i - a);
+    b += 2.0;
+    d = an * d + b;
+    if (std::abs(d) < 1e-300) d = 1e-300;
+    c = b + an / c;
+    if (std::abs(c) < 1e-300) c = 1e-300;
+    d = 1.0 / d;
+    const double delta = d * c;
+    h *= delta;
+    if (std::abs(delta - 1.0) < 1e-15) break;
+  }
+  return std::exp(-x + a * std::log(x) - lnGammaA) * h;
+}
+
+struct ChiSquareResult {
+  double statistic = 0.0;
+  int degreesOfFreedom = 0;
+  double pValue = 0.0;
+  std::string failure;   // a hard failure before any statistics, or ""
+  std::string pictures;  // where it failed, drawn (the suites' failure pictures), or ""
+};
+
+// Pearson's test of observed counts against expected counts. Cells with an
+// expected count below 5 are pooled (sorted by expectation) until each group
+// reaches 5. Any observation in a cell whose expectation is 0 fails outright.
+inline ChiSquareResult chiSquareTest(const std::vector<double>& observed, const std::vector<double>& expected) {
+  ChiSquareResult r;
+  std::vector<size_t> order(observed.size());
+  std::iota(order.begin(), order.end(), size_t(0));
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return expected[a] < expected[b]; });
+  double pooledObserved = 0.0, pooledExpected = 0.0;
+  int groups = 0;
+  for (size_t i : order) {
+    if (expected[i] == 0.0 && observed[i] > 0.0) {
+      r.failure = "a sample landed in a cell where the pdf is zero";
+      return r;
+    }
+    if (expected[i] < 5.0) {
+      pooledObserved += observed[i];
+      pooledExpected += expected[i];
+      if (pooledExpected >= 5.0) {
+        r.statistic += (pooledObserved - pooledExpected) * (pooledObserved - pooledExpected) / pooledExpected;
+        ++groups;
+        pooledObserved = pooledExpected = 0.0;
+      }
+      continue;
+    }
+    r.statistic += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
+    ++groups;
+  }
+  if (pooledExpected > 0.0) {
+    r.statistic += (pooledObserved - pooledExpected) * (pooledObserved - pooledExpected) / std::max(pooledExpected, 1e-12);
+    ++groups;
+  }
+  r.degreesOfFreedom = groups - 1;
+  if (r.degreesOfFreedom < 1) {
+    r.failure = "fewer than one degree of freedom";
+    return r;
+  }
+  r.pValue = upperIncompleteGamma(0.5 * r.degreesOfFreedom, 0.5 * r.statistic);
+  return r;
+}
+
+// Histogram of unit directions over the equal-area map (phi in [-pi, pi],
+// cos(theta) in [-1, 1]), and the counts a solid-angle pdf predicts for
+// `samples` draws: per cell, the midpoint rule on a sub-grid in
+// (phi, theta) of pdf * sin(theta) — smooth even for pdfs that grow like
+// 1 / sin(theta) at the poles, as equirectangular maps' do.
+struct DirectionHistogram {
+  static constexpr int kPhi = 50, kCos = 101;  // odd: no cell edge on the horizon
+  std::vector<double> counts = std::vector<double>(kPhi * kCos, 0.0);
+  int outside = 0;
+
+  // The cell of a unit direction (row j of cos theta, column i of phi: j * kPhi + i); -1 for a vector that is not unit.
+  static int cellOf(const Vec3& w) {
+    if (!(std::abs(glm::length(w) - 1.0f) < 1e-3f)) return -1;
+    const double phi = std::atan2(double(w.y), double(w.x));
+    const int i = std::clamp(int((phi + std::numbers::pi) / (2.0 * std::numbers::pi) * kPhi), 0, kPhi - 1);
+    const int j = std::clamp(int((double(w.z) + 1.0) * 0.5 * kCos), 0, kCos - 1);
+    return j * kPhi + i;
+  }
+
+  void add(const Vec3& w) {
+    const int cell = cellOf(w);
+    if (cell < 0) {
+      ++outside;
+      return;
+    }
+    counts[size_t(cell)] += 1.0;
+  }
+
+  // The solid-angle pdf at many directions at once (a remote call evaluates
+  // the student's pdf for all of them in one message).
+  using PdfBatch = std::function<std::vector<double>(const std::vector<Vec3>&)>;
+
+  // kSub = 32 for piecewise-constant pdfs (environment maps), as Mitsuba does.
+  static std::vector<double> expected(const PdfBatch& pdfs, double samples, int kSub = 8) {
+    const double dPhi = 2.0 * std::numbers::pi / kPhi, dCos = 2.0 / kCos;
+    // Every midpoint of every cell's sub-grid, cell by cell, and its sin(theta).
+    std::vector<Vec3> directions;
+    std::vector<double> sines, dThetas;
+    directions.reserve(size_t(kPhi) * kCos * kSub * kSub);
+    for (int j = 0; j < kCos; ++j) {
+      // The cell's z range [z0, z1] is the theta range [acos(z1), acos(z0)].
+      const double theta0 = std::acos(std::min(1.0, -1.0 + (j + 1) * dCos));
+      const double theta1 = std::acos(std::max(-1.0, -1.0 + j * dCos));
+      const double dTheta = (theta1 - theta0) / kSub;
+      dThetas.push_back(dTheta);
+      for (int i = 0; i < kPhi; ++i)
+        for (int sj = 0; sj < kSub; ++sj)
+          for (int si = 0; si < kSub; ++si) {
+            const double phi = -std::numbers::pi + (i + (si + 0.5) / kSub) * dPhi;
+            const double theta = theta0 + (sj + 0.5) * dTheta;
+            const double r = std::sin(theta);
+            directions.emplace_back(float(r * std::cos(phi)), float(r * std::sin(phi)), float(std::cos(theta)));
+            sines.push_back(r);
+          }
+    }
+    const std::vector<double> pdf = pdfs(directions);
+    std::vector<double> result(kPhi * kCos, 0.0);
+    size_t k = 0;
+    for (int j = 0; j < kCos; ++j)
+      for (int i = 0; i < kPhi; ++i) {
+        double integral = 0.0;
+        for (int s = 0; s < kSub * kSub; ++s, ++k) integral += pdf[k] * sines[k];
+        result[size_t(j * kPhi + i)] = samples * integral * (dPhi / kSub) * dThetas[size_t(j)];
+      }
+    return result;
+  }
+};
+
+}  // namespace pathlab

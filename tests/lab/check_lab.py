@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""The sampling lab, headless, judged on what it must accept and reject.
+
+  check_lab.py PATHLAB TESTS_BUILD_DIR CASES
+
+Each verdict is taken under seeds 1, 2, 3 (independent samples): a correct
+warp must be ACCEPTED under at least two (a correct warp is rejected in
+1 run in 1000, so in two of three with probability 3e-6), a mistake
+REJECTED under all three.
+1. Every warp `pathlab lab --list` names, on the reference this build
+   links; and once with its figure and CSV written (a PNG, and one CSV line
+   per cell with the counts summing to the samples drawn).
+2. The recitation's examples with their classic mistake switched on
+   (--set mistake=1: an unnormalised CDF, the annulus without its Jacobian,
+   the hemisphere without sin theta, blocks that do not sum to 1): rejected.
+3. Every case of CASES: the pathlab-lab program linked with that task file
+   (TESTS_BUILD_DIR/pathlab-lab-KIND-NN-name-FILE; KIND tasks: the stub)
+   gives the verdict listed, without crashing.
+4. Bad input (an unknown warp, an unknown or out-of-range parameter): a
+   message and exit code 1.
+Fixed seeds, so the test itself cannot flake; the lab's rate of rejecting a
+correct warp, measured over many seeds, is in docs/debugger.md."""
+import csv
+import io
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+MISTAKES = ["pdf-cdf", "annulus", "uniform-hemisphere", "discrete"]
+
+
+def lab(program, warp, *settings, figure=None):
+    command = [str(program), "lab"] if Path(program).name == "pathlab" else [str(program)]
+    command += [warp, *[a for s in settings for a in ("--set", s)]]
+    command += ["-o", str(figure)] if figure else ["--no-figure"]
+    run = subprocess.run(command, capture_output=True, text=True, timeout=300)
+    verdict = "ACCEPTED" if "\nACCEPTED" in "\n" + run.stdout else ("REJECTED" if "\nREJECTED" in "\n" + run.stdout else "?")
+    return run.returncode, verdict, run.stdout + run.stderr
+
+
+SEEDS = (1, 2, 3)
+
+
+def verdicts(program, warp, *settings):
+    """(verdicts under each seed, the output of the first run not matching the majority)."""
+    runs = [lab(program, warp, f"seed={seed}", *settings) for seed in SEEDS]
+    bad = [out for code, _, out in runs if code != 0]
+    return [verdict if code == 0 else f"exit {code}" for code, verdict, _ in runs], (bad or [runs[0][2]])[0]
+
+
+def judged(want, seen):
+    return seen.count("ACCEPTED") >= 2 if want == "accept" else seen.count("REJECTED") == len(SEEDS)
+
+
+def main() -> int:
+    pathlab, build, cases = Path(sys.argv[1]), Path(sys.argv[2]), Path(sys.argv[3])
+    failures = []
+    listing = subprocess.run([str(pathlab), "lab", "--list"], capture_output=True, text=True, check=True).stdout
+    warps = [line.split()[0] for line in listing.splitlines() if line.strip()]
+    if len(warps) < 9:
+        failures.append(f"pathlab lab --list names {len(warps)} warps: {warps}")
+
+    with tempfile.TemporaryDirectory(prefix="pathlab-lab-") as temp:
+        for warp in warps:
+            seen, out = verdicts(pathlab, warp)
+            print(f"  reference {warp}: {' '.join(seen)}")
+            if not judged("accept", seen):
+                failures.append(f"reference {warp}: {seen}\n{out}")
+            figure, table = Path(temp) / f"{warp}.png", Path(temp) / f"{warp}.csv"
+            run = subprocess.run([str(pathlab), "lab", warp, "-o", str(figure), "--csv", str(table),
+                                  "--set", "samples=20000"], capture_output=True, text=True, timeout=300)
+            if run.returncode != 0 or not figure.exists() or figure.stat().st_size < 10000:
+                failures.append(f"{warp}: no figure ({run.returncode}):\n{run.stdout}{run.stderr}")
+            elif not table.exists():
+                failures.append(f"{warp}: no CSV")
+            else:
+                rows = list(csv.DictReader(io.StringIO(table.read_text())))
+                drawn = sum(float(r["observed"]) for r in rows)
+                expected = sum(float(r["expected"]) for r in rows)
+                if drawn != 20000 or abs(expected - 20000) > 200:
+                    failures.append(f"{warp}: the CSV's counts sum to {drawn:g} observed, {expected:g} expected")
+
+        for warp in MISTAKES:
+            seen, out = verdicts(pathlab, warp, "mistake=1")
+            print(f"  {warp} with its mistake: {' '.join(seen)}")
+            if not judged("reject", seen):
+                failures.append(f"{warp} mistake=1: {seen}\n{out}")
+
+    for line in cases.read_text().splitlines():
+        if not line.startswith(("mutants/", "alternates/", "tasks/")):
+            continue
+        fields = line.split()
+        path, warp, want = fields[0], fields[1], fields[2]
+        settings = [fields[i + 1] for i in range(3, len(fields) - 1) if fields[i] == "--set"]
+        kind, task, name = path.removesuffix(".cpp").split("/")
+        program = build / f"pathlab-lab-{kind}-{task}-{name}"
+        seen, out = verdicts(program, warp, *settings)
+        print(f"  {path} on {warp}: {' '.join(seen)} (want {want})")
+        if not judged(want, seen):
+            failures.append(f"{path} on {warp}: {seen}, want {want}\n{out[-1500:]}")
+
+    for bad, why in ((["lab", "no-such-warp"], "no warp"), (["lab", "annulus", "--set", "r1=7"], "must be between"),
+                     (["lab", "annulus", "--set", "colour=1"], "has the parameters")):
+        run = subprocess.run([str(pathlab), *bad, "--no-figure"], capture_output=True, text=True, timeout=60)
+        if run.returncode != 1 or why not in run.stderr:
+            failures.append(f"pathlab {' '.join(bad)}: exit {run.returncode}, {run.stderr.strip()[:200]!r}")
+
+    for f in failures:
+        print("FAIL:", f)
+    print(f"sampling-lab: {'ok' if not failures else f'{len(failures)} failures'}")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
