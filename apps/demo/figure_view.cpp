@@ -79,6 +79,17 @@ void FigureView::draw(const Figure& figure) {
   }
 }
 
+void FigureView::drawRows(const Figure& figure, size_t perRow) {
+  ImGui::TextWrapped("%s", figure.title.c_str());
+  const float spacing = 8.0f;
+  const float width = (ImGui::GetContentRegionAvail().x - spacing * float(perRow - 1)) / float(perRow);
+  nextTexture_ = 0;
+  for (size_t i = 0; i < figure.plots.size(); ++i) {
+    if (i % perRow != 0) ImGui::SameLine(0.0f, spacing);
+    drawPlot(figure.plots[i], width, width);
+  }
+}
+
 void FigureView::drawPlot(const Plot& plot, float width, float height) {
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   ImGui::Dummy(ImVec2(width, height));

@@ -15,6 +15,8 @@ class FigureView {
  public:
   // Shows the figure's plots side by side in the space left in the window.
   void draw(const Figure& figure);
+  // The plots in rows of `perRow` (a narrow panel), each as tall as it is wide.
+  void drawRows(const Figure& figure, size_t perRow);
   // Call when the figure changes: image series are uploaded again.
   void invalidate() { textures_.clear(); }
 

@@ -116,13 +116,15 @@ std::vector<double> expectedCounts(const WarpSetup& setup, double n) {
 int pixelsPerCell(int cells) { return std::max(1, 200 / cells); }
 
 // A density picture of a grid of cells (row 0 of `values` at the bottom of
-// the picture, as the plots' y axes run): white 0 to dark blue `top`.
-Image densityPicture(const std::vector<double>& values, int columns, int rows, double top) {
+// the picture, as the plots' y axes run): white 0 to dark blue `top`, on a
+// log scale when `logScale` (a hot spot thousands of times the rest).
+Image densityPicture(const std::vector<double>& values, int columns, int rows, double top, bool logScale) {
   const int kScale = pixelsPerCell(columns), kScaleY = pixelsPerCell(rows);
   Image image(columns * kScale, rows * kScaleY);
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < columns; ++i) {
-      const float t = top > 0.0 ? float(std::clamp(values[size_t(j * columns + i)] / top, 0.0, 1.0)) : 0.0f;
+      const double v = std::clamp(values[size_t(j * columns + i)] / std::max(top, 1e-300), 0.0, 1.0);
+      const float t = float(logScale ? std::log1p(1e4 * v) / std::log1p(1e4) : v);
       const Color c = glm::mix(Color(1.0f), Color(0.02f, 0.06f, 0.35f), t);
       for (int y = 0; y < kScaleY; ++y)
         for (int x = 0; x < kScale; ++x) image.at(i * kScale + x, (rows - 1 - j) * kScaleY + y) = c;
@@ -306,10 +308,16 @@ LabResult runWarp(const Warp& warp, const Values& values) {
     double top = 0.0;
     for (double e : expected) top = std::max(top, e);
     for (double o : bins.counts) top = std::max(top, 0.5 * o);  // a spike over the pdf still shows
-    Plot observedPlot{"histogram of the samples", "", "", false, false, false, {}, {}};
-    observedPlot.series.push_back(imageSeries(densityPicture(bins.counts, bins.columns, bins.rows, top), ""));
-    Plot expectedPlot{"the pdf integrated over each cell", "", "", false, false, false, {}, {}};
-    expectedPlot.series.push_back(imageSeries(densityPicture(expected, bins.columns, bins.rows, top), ""));
+    // A log scale where the pdf spans a wide range (a sun in the sky).
+    std::vector<double> positive;
+    for (double e : expected) if (e > 0.0) positive.push_back(e);
+    std::nth_element(positive.begin(), positive.begin() + ptrdiff_t(positive.size() / 2), positive.end());
+    const bool logScale = !positive.empty() && top > 20.0 * positive[positive.size() / 2];
+    const std::string scale = logScale ? " (log scale)" : "";
+    Plot observedPlot{"histogram of the samples" + scale, "", "", false, false, false, {}, {}};
+    observedPlot.series.push_back(imageSeries(densityPicture(bins.counts, bins.columns, bins.rows, top, logScale), ""));
+    Plot expectedPlot{"the pdf integrated over each cell" + scale, "", "", false, false, false, {}, {}};
+    expectedPlot.series.push_back(imageSeries(densityPicture(expected, bins.columns, bins.rows, top, logScale), ""));
     Plot difference{"difference (red: too many, blue: too few; full at 5 sigma)", "", "", false, false, false, {}, {}};
     difference.series.push_back(imageSeries(differencePicture(bins.counts, expected, bins.columns, bins.rows), ""));
     plots.insert(plots.end(), {observedPlot, expectedPlot, difference});

@@ -197,8 +197,31 @@ Warp cosineHemisphereWarp() {
 // The outcome of a delta BSDF sample: 0 reflection, 1 refraction.
 int lobeOf(const Vec3& wo, const BsdfSample& s) { return s.wi.z * wo.z > 0.0f ? 0 : 1; }
 
+Warp mirrorWarp() {
+  return {"mirror", "T6.4", "sampleMirror: every sample the mirror direction of wo, reported with probability 1",
+          {{"angle", 40.0, 0.0, 89.9, false, false, "incident angle from the normal, degrees"}},
+          [](const Values& p) {
+            const float theta = float(p.at("angle") * kPi / 180.0);
+            const Vec3 wo(std::sin(theta), 0.0f, std::cos(theta)), mirrored(-wo.x, -wo.y, wo.z);
+            // The probability the sample reports for the mirror direction (the lab's own, not reflect()'s).
+            const BsdfSample first = sampleMirror(wo, Color(1.0f));
+            const double reported = glm::length(first.wi - mirrored) < 1e-4f ? double(first.pdf) : 0.0;
+            WarpSetup w;
+            w.domain = Domain::Discrete;
+            w.outcomes = {"the mirror direction", "elsewhere"};
+            w.sample = [=](Vec2) -> std::optional<Vec3> {
+              const BsdfSample s = sampleMirror(wo, Color(1.0f));
+              if (!(s.pdf > 0.0f)) return std::nullopt;
+              return Vec3(glm::length(s.wi - mirrored) < 1e-4f ? 0.0f : 1.0f, 0.0f, 0.0f);
+            };
+            w.pdf = pointwise([reported](const Vec3& k) { return k.x == 0.0f ? reported : 0.0; });
+            w.mismatchMeans = "wi is not wo mirrored about the normal (-wo.x, -wo.y, wo.z), or its probability is not 1";
+            return w;
+          }};
+}
+
 Warp glassWarp() {
-  return {"glass", "T6.3", "sampleGlass: how often each lobe is chosen against the probability it reports",
+  return {"glass", "T6.5", "sampleGlass: how often each lobe is chosen against the probability it reports",
           {{"angle", 40.0, 0.0, 89.9, false, false, "incident angle from the normal, degrees"},
            {"ior", 1.5, 1.0, 3.0, false, false, "index of refraction"},
            {"inside", 0, 0, 1, true, false, "1: wo inside the glass (below the surface)"}},
@@ -270,7 +293,8 @@ Warp environmentWarp() {
 const std::vector<Warp>& allWarps() {
   static const std::vector<Warp> warps = {pdfCdfWarp(),          annulusWarp(),         uniformHemisphereWarp(),
                                           discreteWarp(),        pixelSampleWarp(),     lightDirectionsWarp(),
-                                          cosineHemisphereWarp(), glassWarp(),           environmentWarp()};
+                                          cosineHemisphereWarp(), mirrorWarp(),          glassWarp(),
+                                          environmentWarp()};
   return warps;
 }
 

@@ -25,6 +25,7 @@ constexpr const char* kTabNames[] = {"", "1 Camera", "2 Hits", "3 BVH", "4 Direc
 static_assert(std::size(kTaskTitles) == kTaskCount + 1 && std::size(kTabNames) == kTaskCount + 1,
               "a title and a tab name for every task folder (core/task_list.h)");
 constexpr int kInspectedSamples = 16;
+constexpr int kLabTab = kTaskCount + 1;  // after the tasks' panels
 const ImVec4 kWarning(1.0f, 0.45f, 0.35f, 1.0f), kGood(0.5f, 0.9f, 0.5f, 1.0f), kDim(0.65f, 0.65f, 0.65f, 1.0f);
 
 // The views of every task, made once: panels keep pointers into it.
@@ -177,6 +178,7 @@ void App::inspect(IVec2 pixel) {
 }
 
 bool App::panelSettled() const {
+  if (selectedTab_ == kLabTab) return lab_.settled();
   const std::vector<const DebugView*> panelViews = viewsOfTask(selectedTab_);
   return panelViews.empty() ||
          (shownKey_ == viewKey(*panelViews[size_t(selectedView_[size_t(selectedTab_)])]) && viewWorker_.idle());
@@ -267,6 +269,14 @@ void App::drawSidePanel(float x, float width, float height) {
         ImGui::EndChild();
         ImGui::EndTabItem();
       }
+    }
+    const ImGuiTabItemFlags labFlags = requestedTab_ == kLabTab ? ImGuiTabItemFlags_SetSelected : 0;
+    if (ImGui::BeginTabItem("Lab###lab", nullptr, labFlags)) {
+      if (requestedTab_ < 0) selectedTab_ = kLabTab;
+      ImGui::BeginChild("panel", ImVec2(0, 0), false);
+      lab_.draw();
+      ImGui::EndChild();
+      ImGui::EndTabItem();
     }
     ImGui::EndTabBar();
   }
@@ -447,6 +457,15 @@ bool App::runCommand(const ScriptCommand& command) {
     const int panel = int(command.number(0));
     if (panel < 1 || panel > 7) throw Error("script line " + std::to_string(command.line) + ": panel must be 1..7");
     requestedTab_ = selectedTab_ = panel;
+  } else if (verb == "lab") {
+    if (!lab_.select(command.args[0])) {
+      throw Error("script line " + std::to_string(command.line) + ": the lab has no warp \"" + command.args[0] + "\"");
+    }
+    requestedTab_ = selectedTab_ = kLabTab;
+  } else if (verb == "lab-set") {
+    if (!lab_.set(command.args[0], command.number(1))) {
+      throw Error("script line " + std::to_string(command.line) + ": the warp has no parameter \"" + command.args[0] + "\"");
+    }
   } else if (verb == "view") {
     const std::vector<const DebugView*> panelViews = viewsOfTask(selectedTab_);
     auto found = std::find_if(panelViews.begin(), panelViews.end(),

@@ -2,7 +2,8 @@
 // inspect it, drag to orbit, right-drag to pan, wheel to zoom) with the pixel
 // inspector below it, and on the right the settings and one panel per task. A panel
 // shows its task's debugger views (tasks/NN-name/debugger.cpp), computed in
-// the background from the current scene, camera and inspected pixel.
+// the background from the current scene, camera and inspected pixel; the
+// last tab is the sampling lab (lab_panel.h).
 #pragma once
 
 #include <array>
@@ -15,6 +16,7 @@
 #include "background_worker.h"
 #include "debug/debug_views.h"
 #include "debug/inspect.h"
+#include "lab_panel.h"
 #include "render/render.h"
 #include "script.h"
 #include "shell.h"
@@ -106,7 +108,7 @@ class App : public ShellClient {
   std::unique_ptr<const Lights> inspectionLights_;
   bool inspectionStale_ = false;  // the scene changed since inspection_ was traced
 
-  int selectedTab_ = 1;        // the task whose panel is shown
+  int selectedTab_ = 1;        // the task whose panel is shown (kLabTab: the sampling lab)
   int requestedTab_ = -1;      // a tab to select programmatically this frame
   std::array<int, 8> selectedView_{};
   int depth_ = 3;
@@ -116,6 +118,7 @@ class App : public ShellClient {
   Texture viewTexture_;
   DebugOutput viewOutput_;
   std::string viewError_;
+  LabPanel lab_;
 
   size_t scriptPosition_ = 0;
   int settledFrames_ = 0, panelSettledFrames_ = 0;

@@ -10,7 +10,8 @@ namespace pathlab::gui {
 std::vector<ScriptCommand> parseScript(const std::string& text, const std::string& name) {
   static const std::map<std::string, size_t> arity = {
       {"panel", 1},  {"view", 1},     {"click", 2},      {"orbit", 2}, {"view-orbit", 2}, {"depth", 1},
-      {"exposure", 1}, {"wait", 0},   {"wait-spp", 1}, {"wait-panel", 0},   {"screenshot", 1}, {"quit", 0}};
+      {"exposure", 1}, {"wait", 0},   {"wait-spp", 1}, {"wait-panel", 0},   {"screenshot", 1}, {"quit", 0},
+      {"lab", 1},      {"lab-set", 2}};
   std::vector<ScriptCommand> commands;
   std::istringstream lines(text);
   std::string line;
@@ -27,8 +28,10 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
       throw Error(where + command.verb + " takes " + std::to_string(known->second) + " argument(s), got " +
                   std::to_string(command.args.size()));
     }
-    const bool textArgument = command.verb == "view" || command.verb == "screenshot";
-    for (const std::string& arg : command.args) {
+    const bool textArgument = command.verb == "view" || command.verb == "screenshot" || command.verb == "lab";
+    for (size_t i = 0; i < command.args.size(); ++i) {
+      const std::string& arg = command.args[i];
+      if (command.verb == "lab-set" && i == 0) continue;  // the parameter's name
       size_t used = 0;
       try {
         (void)std::stod(arg, &used);

@@ -9,7 +9,9 @@
 //   exposure -1        display exposure in stops
 //   wait               until the render and the panel are finished
 //   wait-spp 8         until the render has 8 samples per pixel
-//   wait-panel         until the panel's view is computed
+//   lab environment    show the sampling lab's tab, on that warp
+//   lab-set map 3      set one of the warp's parameters
+//   wait-panel         until the panel's view (or the lab's test) is computed
 //   screenshot F.png   save the window
 //   quit
 // Blank lines and lines starting with # are skipped.

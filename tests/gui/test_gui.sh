@@ -78,6 +78,13 @@ screenshot OUT/paths-front.png
 view-orbit 50 20
 wait-panel
 screenshot OUT/paths-side.png
+lab cosine-hemisphere
+wait-panel
+screenshot OUT/lab.png
+lab annulus
+lab-set mistake 1
+wait-panel
+screenshot OUT/lab-mistake.png
 quit
 SCRIPT
 sed -i "s|OUT|$out|g" "$out/session.txt"
@@ -85,7 +92,7 @@ if ! xrun "$gui" --script "$out/session.txt" --timeout 300 > "$out/session.log" 
   fail "scripted session exited with $?"; cat "$out/session.err"
 fi
 grep -q "click 140 200 -> pixel 140,200: 16 samples" "$out/session.log" || fail "the click was not inspected"
-for f in panel1 paths-front paths-side; do
+for f in panel1 paths-front paths-side lab lab-mistake; do
   [[ -s $out/$f.png ]] || { fail "no screenshot $f.png"; continue; }
   size=$(identify -format "%wx%h" "$out/$f.png")
   [[ $size == 1500x900 ]] || fail "$f.png is $size, not the 1500x900 window"
@@ -95,6 +102,10 @@ pixels=$((1500 * 900))
 d=$(differ "$out/panel1.png" "$out/paths-front.png" $pixels)
 expect "switching panel 1 -> 5 changed the window ($d of the pixels)" "$d > 0.05"
 check_todo_lines "$out/session.err" "scripted session"
+d=$(differ "$out/paths-side.png" "$out/lab.png" $pixels)
+expect "the sampling lab's tab changed the window ($d of the pixels)" "$d > 0.05"
+d=$(differ "$out/lab.png" "$out/lab-mistake.png" $pixels)
+expect "another warp, with its mistake, redrew the lab ($d of the pixels)" "$d > 0.02"
 # The paths view draws the clicked pixel's paths: camera rays (task 1), hits
 # (task 2) and the path tracer (tasks 4 and 5). On stubs there is next to
 # nothing to orbit.
@@ -129,6 +140,8 @@ panel 6
 wait-panel
 panel 7
 wait-panel
+lab environment
+wait-panel
 click 10 10
 wait
 screenshot OUT/stubs.png
@@ -157,6 +170,10 @@ printf 'panel 3\nfly 1 2\n' > "$out/bad.txt"
 check_error "bad.txt:2: unknown command \"fly\"" --script "$out/bad.txt"
 printf 'panel 3\nview nothing\n' > "$out/bad.txt"
 check_error "panel 3 has no view \"nothing\"" --script "$out/bad.txt"
+printf 'lab no-such-warp\n' > "$out/bad.txt"
+check_error 'the lab has no warp "no-such-warp"' --script "$out/bad.txt"
+printf 'lab glass\nlab-set colour 2\n' > "$out/bad.txt"
+check_error 'the warp has no parameter "colour"' --script "$out/bad.txt"
 printf 'panel 2\nclick 10 ten\n' > "$out/bad.txt"
 check_error 'bad.txt:2: click: "ten" is not a number' --script "$out/bad.txt"
 printf 'click 5000 1\n' > "$out/bad.txt"

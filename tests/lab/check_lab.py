@@ -58,7 +58,7 @@ def main() -> int:
     failures = []
     listing = subprocess.run([str(pathlab), "lab", "--list"], capture_output=True, text=True, check=True).stdout
     warps = [line.split()[0] for line in listing.splitlines() if line.strip()]
-    if len(warps) < 9:
+    if len(warps) < 10:
         failures.append(f"pathlab lab --list names {len(warps)} warps: {warps}")
 
     with tempfile.TemporaryDirectory(prefix="pathlab-lab-") as temp:

@@ -1,0 +1,98 @@
+#include "lab_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pathlab::gui {
+
+LabPanel::LabPanel()
+    : warp_(&lab::allWarps().front()),
+      worker_([](const Job& job, const std::atomic<bool>&, const std::function<void(Computed)>& publish) {
+        Computed computed;
+        computed.generation = job.generation;
+        try {
+          computed.result = lab::runWarp(*job.warp, job.values);
+        } catch (const std::exception& e) {
+          computed.error = e.what();
+        }
+        publish(std::move(computed));
+      }) {}
+
+bool LabPanel::settled() const {
+  return generation_ > 0 && hasResult_ && worker_.idle() && shown_.generation == generation_;
+}
+
+bool LabPanel::select(const std::string& name) {
+  const lab::Warp* warp = lab::findWarp(name);
+  if (!warp) return false;
+  warp_ = warp;
+  values_.clear();
+  recompute();
+  return true;
+}
+
+bool LabPanel::set(const std::string& name, double value) {
+  for (const demo::Parameter& p : lab::parametersOf(*warp_)) {
+    if (p.name != name) continue;
+    values_[name] = std::clamp(value, p.min, p.max);
+    recompute();
+    return true;
+  }
+  return false;
+}
+
+void LabPanel::recompute() {
+  for (const demo::Parameter& p : lab::parametersOf(*warp_)) values_.try_emplace(p.name, p.value);
+  worker_.submit({warp_, values_, ++generation_});
+}
+
+void LabPanel::draw() {
+  if (generation_ == 0) recompute();  // the first time the tab is shown
+  if (std::optional<Computed> computed = worker_.take(); computed && computed->generation == generation_) {
+    shown_ = std::move(*computed);
+    view_.invalidate();
+    hasResult_ = true;
+  }
+  ImGui::PushItemWidth(220);
+  if (ImGui::BeginCombo("warp", (warp_->name + "  (" + warp_->task + ")").c_str())) {
+    for (const lab::Warp& warp : lab::allWarps()) {
+      if (ImGui::Selectable((warp.name + "  (" + warp.task + ")").c_str(), &warp == warp_)) select(warp.name);
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::TextWrapped("%s", warp_->summary.c_str());
+  bool changed = false;
+  int shown = 0;
+  for (const demo::Parameter& parameter : lab::parametersOf(*warp_)) {
+    double& value = values_[parameter.name];
+    if (shown++ % 2 == 1) ImGui::SameLine();
+    const ImGuiSliderFlags flags = parameter.logarithmic ? ImGuiSliderFlags_Logarithmic : 0;
+    if (parameter.integer) {
+      int v = int(std::lround(value));
+      if (ImGui::SliderInt(parameter.name.c_str(), &v, int(parameter.min), int(parameter.max), "%d", flags)) {
+        value = v, changed = true;
+      }
+    } else {
+      float v = float(value);
+      if (ImGui::SliderFloat(parameter.name.c_str(), &v, float(parameter.min), float(parameter.max), "%.3f", flags)) {
+        value = v, changed = true;
+      }
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", parameter.help.c_str());
+  }
+  ImGui::PopItemWidth();
+  if (changed) recompute();
+  ImGui::Separator();
+  if (!worker_.idle()) ImGui::TextDisabled("computing...");
+  if (!shown_.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", shown_.error.c_str());
+  if (!hasResult_) return;
+  const ImVec4 verdict = shown_.result.accepted ? ImVec4(0.45f, 0.85f, 0.45f, 1.0f) : ImVec4(1.0f, 0.45f, 0.35f, 1.0f);
+  ImGui::PushStyleColor(ImGuiCol_Text, verdict);
+  ImGui::TextWrapped("%s", shown_.result.shown.numbers.c_str());
+  ImGui::PopStyleColor();
+  view_.drawRows(shown_.result.shown.figure, 2);
+}
+
+}  // namespace pathlab::gui
