@@ -9,6 +9,7 @@
 #include "../gui/background_worker.h"
 #include "../gui/shell.h"
 #include "figure_view.h"
+#include "parameter_sliders.h"
 
 namespace pathlab::demo {
 namespace {
@@ -57,20 +58,8 @@ class DemoWindow : public gui::ShellClient {
     }
     ImGui::Separator();
     ImGui::TextWrapped("%s", demo_->summary.c_str());
-    bool changed = false;
     ImGui::PushItemWidth(180);
-    for (const Parameter& parameter : demo_->parameters) {
-      double& value = values_[parameter.name];
-      const ImGuiSliderFlags flags = parameter.logarithmic ? ImGuiSliderFlags_Logarithmic : 0;
-      if (parameter.integer) {
-        int v = int(std::lround(value));
-        if (ImGui::SliderInt(parameter.name.c_str(), &v, int(parameter.min), int(parameter.max), "%d", flags)) value = v, changed = true;
-      } else {
-        float v = float(value);
-        if (ImGui::SliderFloat(parameter.name.c_str(), &v, float(parameter.min), float(parameter.max), "%.3f", flags)) value = v, changed = true;
-      }
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", parameter.help.c_str());
-    }
+    const bool changed = drawParameterSliders(demo_->parameters, values_);
     ImGui::PopItemWidth();
     if (changed) recompute();
     ImGui::Separator();

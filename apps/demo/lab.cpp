@@ -195,8 +195,8 @@ const Warp* findWarp(const std::string& name) {
   return found == warps.end() ? nullptr : &*found;
 }
 
-LabResult runWarp(const Warp& warp, const Values& values) {
-  const WarpSetup setup = warp.setup(values);
+LabResult runWarp(const Warp& warp, const Values& values, const WarpFiles& files) {
+  const WarpSetup setup = warp.setup(values, files);
   const int n = demo::count(values, "samples"), gridLines = demo::count(values, "grid");
   const auto sequence = SampleSequence(demo::count(values, "sequence"));
   const uint64_t seed = uint64_t(demo::count(values, "seed"));
@@ -283,6 +283,7 @@ LabResult runWarp(const Warp& warp, const Values& values) {
     // fold-over or a seam shows as a line that crosses or jumps.
     Plot grid{"the unit square's grid, warped", xLabel, yLabel, false, false, setup.domain == Domain::Plane, {}, {}};
     constexpr int kSteps = 64;
+    const float seamJump = 0.2f * glm::length(setup.hi - setup.lo);
     for (int along = 0; along < 2; ++along)
       for (int k = 0; k <= gridLines; ++k) {
         std::vector<double> xs, ys;
@@ -299,7 +300,9 @@ LabResult runWarp(const Warp& warp, const Values& values) {
             continue;
           }
           const Vec2 at = shownAt(setup.domain, *p, u);
-          if (!xs.empty() && sphereMap && std::abs(at.x - xs.back()) > kPi) flush();  // across the phi seam
+          // A seam: across phi = ±pi on the sphere, from one triangle of a light to the next in the plane.
+          if (!xs.empty() && sphereMap && std::abs(at.x - xs.back()) > kPi) flush();
+          if (!xs.empty() && !sphereMap && glm::length(Vec2(at.x - xs.back(), at.y - ys.back())) > seamJump) flush();
           xs.push_back(at.x), ys.push_back(at.y);
         }
         flush();
@@ -353,6 +356,7 @@ LabResult runWarp(const Warp& warp, const Values& values) {
   std::ostringstream numbers;
   numbers << format("%s: %d samples (%s), seed %llu\n", warp.name.c_str(), n, sequenceName(sequence),
                     static_cast<unsigned long long>(seed));
+  if (!setup.note.empty()) numbers << setup.note << "\n";
   numbers << format("pdf integrates to %.5f over the domain%s\n", result.pdfIntegral,
                     std::abs(result.pdfIntegral - 1.0) < 1e-2 ? "" : " (not 1: the pdf is not normalised)");
   if (result.noSample > 0) numbers << format("%d draws returned no sample\n", result.noSample);
@@ -406,7 +410,10 @@ int runLab(const LabArgs& args) {
   }
   const std::string figure = args.noFigure ? "" : demo::figurePath(args.output, "lab-" + warp->name);
   if (!figure.empty() && !isWritableImagePath(figure)) throw Error("-o " + args.output + ": use a .png file, a folder or a prefix");
-  const LabResult result = runWarp(*warp, values);
+  if (!args.map.empty() && !warp->takesEnvironmentMap) {
+    throw Error("lab: --map is for the environment warp (" + warp->name + " reads no map)");
+  }
+  const LabResult result = runWarp(*warp, values, WarpFiles{args.map});
   if (!figure.empty()) demo::writeFigure(result.shown.figure, figure);
   if (!args.csv.empty()) {
     std::ofstream csv(args.csv);

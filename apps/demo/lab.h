@@ -36,6 +36,13 @@ struct WarpSetup {
   std::function<std::vector<double>(const std::vector<Vec3>&)> pdf;
   int sphereSubdivision = 8;  // midpoints per cell side for the expected counts (32 for piecewise-constant maps)
   std::string mismatchMeans;  // what a rejection usually means, for this warp
+  std::string note;           // printed with the numbers (which map, and its size)
+};
+
+// Files a warp reads: the user's own environment map (`--map`, the GUI's
+// map field); empty: the warp's built-in choices.
+struct WarpFiles {
+  std::string environmentMap;
 };
 
 struct Warp {
@@ -43,7 +50,8 @@ struct Warp {
   std::string task;     // "T5.1", ... or "seed" for the recitation's examples
   std::string summary;  // one line for --list
   std::vector<demo::Parameter> parameters;  // besides the common ones (samples, sequence, seed, grid)
-  std::function<WarpSetup(const demo::Values&)> setup;
+  std::function<WarpSetup(const demo::Values&, const WarpFiles&)> setup;
+  bool takesEnvironmentMap = false;  // reads WarpFiles::environmentMap
 };
 
 // Every warp, in task order, the recitation's examples first.
@@ -66,11 +74,11 @@ struct LabResult {
   std::string csv;  // cell, position, observed, expected: one line per cell
 };
 
-LabResult runWarp(const Warp& warp, const demo::Values& values);
+LabResult runWarp(const Warp& warp, const demo::Values& values, const WarpFiles& files = {});
 
 // `pathlab lab` (lab_cli.h has its options).
 struct LabArgs {
-  std::string warp, output, csv;
+  std::string warp, output, csv, map;
   std::vector<std::string> settings;
   bool list = false, params = false, noFigure = false;
 };

@@ -15,6 +15,8 @@ inline void addLabOptions(CLI::App& command, LabArgs& args) {
   command.add_option("--set", args.settings, "A parameter, NAME=VALUE (repeatable): samples, sequence, seed, grid "
                                              "and the warp's own (--list shows the warps, --params WARP theirs)")
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  command.add_option("--map", args.map, "The environment warp on your own map (an .exr, .hdr or .png, "
+                                        "equirectangular) instead of its built-in ones");
   command.add_flag("--no-figure", args.noFigure, "Only the numbers and the verdict (no matplotlib)");
   command.add_flag("--list", args.list, "List the warps");
   command.add_flag("--params", args.params, "List the warp's parameters, their defaults and ranges");

@@ -8,6 +8,9 @@
 #include <numbers>
 
 #include "demo_support.h"
+#include "util/distribution.h"
+#include "util/error.h"
+#include "util/image.h"
 #include "lab.h"
 #include "tasks/camera_rays.h"
 #include "tasks/direct_lighting.h"
@@ -18,6 +21,7 @@
 namespace pathlab::lab {
 
 using demo::count;
+using demo::format;
 using demo::Values;
 
 namespace {
@@ -39,7 +43,7 @@ std::function<std::vector<double>(const std::vector<Vec3>&)> pointwise(std::func
 Warp pdfCdfWarp() {
   return {"pdf-cdf", "seed", "f(x) = 0.6(x-1)^3 - 0.3x^2 - 0.1x + 1 on [0, 2] by inverting its CDF",
           {{"mistake", 0, 0, 1, true, false, "1: invert an unnormalised CDF, 1.2 F (x = F^-1(u / 1.2))"}},
-          [](const Values& p) {
+          [](const Values& p, const WarpFiles&) {
             const bool mistake = count(p, "mistake") == 1;
             WarpSetup s;
             s.domain = Domain::Interval;
@@ -58,7 +62,7 @@ Warp annulusWarp() {
           {{"r1", 0.3, 0.0, 0.95, false, false, "inner radius"},
            {"r2", 1.0, 0.1, 1.0, false, false, "outer radius"},
            {"mistake", 0, 0, 1, true, false, "1: r = r1 + q (r2 - r1), uniform in r (the Jacobian r forgotten)"}},
-          [](const Values& p) {
+          [](const Values& p, const WarpFiles&) {
             const double r2 = p.at("r2"), r1 = std::min(p.at("r1"), 0.95 * r2);
             const bool mistake = count(p, "mistake") == 1;
             WarpSetup s;
@@ -80,7 +84,7 @@ Warp annulusWarp() {
 Warp uniformHemisphereWarp() {
   return {"uniform-hemisphere", "seed", "uniform directions on the hemisphere: cos theta = u1, phi = 2 pi u2",
           {{"mistake", 0, 0, 1, true, false, "1: theta = pi/2 u1, uniform in theta (sin theta forgotten)"}},
-          [](const Values& p) {
+          [](const Values& p, const WarpFiles&) {
             const bool mistake = count(p, "mistake") == 1;
             WarpSetup s;
             s.domain = Domain::Sphere;
@@ -98,7 +102,7 @@ Warp uniformHemisphereWarp() {
 Warp discreteWarp() {
   return {"discrete", "seed", "a discrete distribution by stacking its probabilities into CDF blocks",
           {{"mistake", 0, 0, 1, true, false, "1: the blocks from the weights without dividing by their sum"}},
-          [](const Values& p) {
+          [](const Values& p, const WarpFiles&) {
             const std::vector<double> weights = {1.0, 2.5, 0.5, 3.0, 2.0, 1.0};
             double total = 0.0;
             for (double w : weights) total += w;
@@ -123,7 +127,7 @@ Warp discreteWarp() {
 
 Warp pixelSampleWarp() {
   return {"pixel-sample", "T1.1", "pixelSamplePosition: points in pixel (3, 7), drawn relative to its corner", {},
-          [](const Values&) {
+          [](const Values&, const WarpFiles&) {
             WarpSetup s;
             s.lo = Vec2(-0.25f), s.hi = Vec2(1.25f);  // a margin: a sample outside the pixel shows
             s.sample = [](Vec2 u) -> std::optional<Vec3> {
@@ -138,13 +142,122 @@ Warp pixelSampleWarp() {
 
 // ---- Task 4 ------------------------------------------------------------------
 
+// The area lights the lab samples points on, in the plane z = 0 (a mesh's
+// triangles counter-clockwise) or a sphere.
+struct LabLightShape {
+  std::vector<Point3> positions;
+  std::vector<glm::uvec3> triangles;
+  bool sphere = false;
+};
+
+LabLightShape labLight(int which) {
+  if (which == 2) return {{}, {}, true};
+  if (which == 0) {  // the Cornell box's ceiling light, 1.3 x 1.05: two equal triangles
+    return {{{-0.65f, -0.525f, 0.0f}, {0.65f, -0.525f, 0.0f}, {0.65f, 0.525f, 0.0f}, {-0.65f, 0.525f, 0.0f}},
+            {{0, 1, 2}, {0, 2, 3}}};
+  }
+  // An L of four triangles and two strays of very different areas (0.4 to 0.02):
+  // choosing a triangle by count rather than by area shows at once.
+  return {{{-1.0f, -1.0f, 0.0f}, {1.0f, -1.0f, 0.0f}, {1.0f, -0.6f, 0.0f}, {-1.0f, -0.6f, 0.0f},
+           {-0.6f, -0.6f, 0.0f}, {-0.6f, 1.0f, 0.0f}, {-1.0f, 1.0f, 0.0f},
+           {0.0f, -0.4f, 0.0f}, {1.0f, -0.4f, 0.0f}, {1.0f, 1.0f, 0.0f},
+           {-0.4f, 0.6f, 0.0f}, {-0.2f, 0.6f, 0.0f}, {-0.4f, 0.8f, 0.0f}},
+          {{0, 1, 2}, {0, 2, 3}, {3, 4, 5}, {3, 5, 6}, {7, 8, 9}, {10, 11, 12}}};
+}
+
+// Twice the signed area of (a, b, p) in the plane: >= 0 when p is left of a -> b.
+float edgeSide(const Point3& a, const Point3& b, const Point3& p) {
+  return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+
+Warp lightPointsWarp() {
+  return {"light-points", "T4",
+          "AreaLight::sample (the framework's, used by task 4): points uniform by area on a mesh or sphere light",
+          {{"shape", 0, 0, 2, true, false, "0 the Cornell box's ceiling light, 1 triangles of unequal areas, 2 a sphere"},
+           {"mistake", 0, 0, 2, true, false,
+            "1: the triangle picked uniformly, not by area (a sphere: theta = pi u, not cos theta = 1 - 2u); "
+            "2: b = u, not sqrt(u) (points crowd at a corner)"}},
+          [](const Values& p, const WarpFiles&) {
+            const LabLightShape shape = labLight(count(p, "shape"));
+            const int mistake = count(p, "mistake");
+            // A scene holding just the light, as Lights::fromScene would build it.
+            auto scene = std::make_shared<Scene>();
+            Material glow;
+            glow.emission = Color(1.0f);
+            scene->materials.push_back(glow);
+            if (shape.sphere) {
+              scene->spheres.push_back({Point3(0.0f), 1.0f, 0});
+            } else {
+              scene->meshes.push_back({});
+              scene->meshes[0].positions = shape.positions;
+              scene->meshes[0].triangles = shape.triangles;
+            }
+            scene->indexPrimitives();
+            const auto light = std::make_shared<AreaLight>(shape.sphere ? AreaLight::fromSphere(*scene, 0)
+                                                                        : AreaLight::fromMesh(*scene, 0));
+            WarpSetup s;
+            if (shape.sphere) {
+              // A uniform point on the unit sphere is a uniform direction: 1 / (4 pi) per steradian.
+              s.domain = Domain::Sphere;
+              s.sample = [scene, light, mistake](Vec2 u) -> std::optional<Vec3> {
+                if (mistake == 0) return light->sample(u).point;
+                const double theta = kPi * u.x, phi = 2.0 * kPi * u.y;  // the mistake: uniform in theta
+                return Vec3(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
+                            float(std::cos(theta)));
+              };
+              s.pdf = pointwise([](const Vec3&) { return 1.0 / (4.0 * kPi); });
+              s.mismatchMeans = "the point is not uniform over the sphere: z = 1 - 2u, not cos(theta) = u";
+              return s;
+            }
+            s.domain = Domain::Plane;
+            s.lo = Vec2(1e9f), s.hi = Vec2(-1e9f);
+            for (const Point3& v : shape.positions) s.lo = glm::min(s.lo, Vec2(v)), s.hi = glm::max(s.hi, Vec2(v));
+            std::vector<float> areas;
+            for (const glm::uvec3& t : shape.triangles) {
+              areas.push_back(0.5f * edgeSide(shape.positions[t.x], shape.positions[t.y], shape.positions[t.z]));
+            }
+            const auto byArea = std::make_shared<Distribution1D>(areas);
+            s.sample = [scene, light, shape, mistake, byArea](Vec2 u) -> std::optional<Vec3> {
+              if (mistake == 0) return light->sample(u).point;
+              // The two classic mistakes, written here (the framework's sampler makes neither).
+              size_t i = 0;
+              float ux = u.x;
+              if (mistake == 1) {
+                const size_t count = shape.triangles.size();
+                i = std::min(count - 1, size_t(u.x * float(count)));
+                ux = u.x * float(count) - float(i);
+              } else {
+                i = byArea->sample(u.x, &ux);
+              }
+              const glm::uvec3& t = shape.triangles[i];
+              const float root = mistake == 2 ? ux : std::sqrt(ux);
+              const float b1 = root * (1.0f - u.y), b2 = root * u.y;
+              return (1.0f - b1 - b2) * shape.positions[t.x] + b1 * shape.positions[t.y] + b2 * shape.positions[t.z];
+            };
+            const double inverseArea = 1.0 / double(light->area());
+            s.pdf = pointwise([shape, inverseArea](const Vec3& x) {
+              for (const glm::uvec3& t : shape.triangles) {
+                const Point3 &a = shape.positions[t.x], &b = shape.positions[t.y], &c = shape.positions[t.z];
+                if (edgeSide(a, b, x) >= 0.0f && edgeSide(b, c, x) >= 0.0f && edgeSide(c, a, x) >= 0.0f) {
+                  return inverseArea;
+                }
+              }
+              return 0.0;
+            });
+            s.mismatchMeans = "the points are not uniform by area: a triangle must be chosen with probability "
+                              "area / total, and a point in it needs sqrt(u) (b1 = sqrt(u1) (1 - u2), "
+                              "b2 = sqrt(u1) u2)";
+            return s;
+          }};
+}
+
 Warp lightDirectionsWarp() {
   return {"light-directions", "T4.3",
           "lightDirection: points sampled by area on a square light, as directions with their solid-angle pdf",
           {{"height", 1.0, 0.05, 10.0, false, true, "the light's height above the shading point"},
            {"size", 1.0, 0.05, 10.0, false, true, "the light's side"},
            {"offset", 0.5, 0.0, 10.0, false, false, "the light's centre, sideways from straight above"}},
-          [](const Values& p) {
+          [](const Values& p, const WarpFiles&) {
             const float h = float(p.at("height")), side = float(p.at("size")), offset = float(p.at("offset"));
             // The light faces down (-z) towards the shading point at the origin.
             auto lightPoint = [=](Point3 point) {
@@ -181,7 +294,7 @@ Warp lightDirectionsWarp() {
 
 Warp cosineHemisphereWarp() {
   return {"cosine-hemisphere", "T5.1", "sampleDiffuseDirection against diffuseDirectionPdf (local frame, normal +z)", {},
-          [](const Values&) {
+          [](const Values&, const WarpFiles&) {
             WarpSetup s;
             s.domain = Domain::Sphere;
             s.sample = [](Vec2 u) -> std::optional<Vec3> { return sampleDiffuseDirection(u); };
@@ -200,7 +313,7 @@ int lobeOf(const Vec3& wo, const BsdfSample& s) { return s.wi.z * wo.z > 0.0f ? 
 Warp mirrorWarp() {
   return {"mirror", "T6.4", "sampleMirror: every sample the mirror direction of wo, reported with probability 1",
           {{"angle", 40.0, 0.0, 89.9, false, false, "incident angle from the normal, degrees"}},
-          [](const Values& p) {
+          [](const Values& p, const WarpFiles&) {
             const float theta = float(p.at("angle") * kPi / 180.0);
             const Vec3 wo(std::sin(theta), 0.0f, std::cos(theta)), mirrored(-wo.x, -wo.y, wo.z);
             // The probability the sample reports for the mirror direction (the lab's own, not reflect()'s).
@@ -225,7 +338,7 @@ Warp glassWarp() {
           {{"angle", 40.0, 0.0, 89.9, false, false, "incident angle from the normal, degrees"},
            {"ior", 1.5, 1.0, 3.0, false, false, "index of refraction"},
            {"inside", 0, 0, 1, true, false, "1: wo inside the glass (below the surface)"}},
-          [](const Values& p) {
+          [](const Values& p, const WarpFiles&) {
             const float theta = float(p.at("angle") * kPi / 180.0), ior = float(p.at("ior"));
             const float side = count(p, "inside") == 1 ? -1.0f : 1.0f;
             const Vec3 wo(std::sin(theta), 0.0f, side * std::cos(theta));
@@ -267,32 +380,81 @@ Image labMap(int which) {
   return map;
 }
 
+// The widest user map the lab tests as it is; a wider one is averaged down,
+// so that the expected counts' 48 midpoints per cell side (2,400 around phi)
+// see every pixel about ten times: with 8 (a whole number) per pixel, a hot
+// pixel's share came out 0.5 % off; with 12, 0.02 %. A figure still redraws
+// in about a second.
+constexpr int kWidestLabMap = 256;
+constexpr int kUserMapMidpoints = 48;
+
+// A user's map, read as a scene reads one (invalid texels black), averaged
+// down by a whole factor when it is wider than the lab resolves.
+Image userMap(const std::string& path, std::string* note) {
+  Image map;
+  try {
+    map = readImage(path);
+  } catch (const Error& e) {
+    throw Error(std::string("lab: --map: ") + e.what());
+  }
+  const size_t invalid = zeroInvalidRadiance(map);
+  float brightest = 0.0f;
+  for (const Color& c : map.pixels) brightest = std::max(brightest, maxComponent(c));
+  if (!(brightest > 0.0f)) throw Error("lab: --map " + path + ": the map is black everywhere: there is no light to sample");
+  *note = format("map: %s (%d x %d", path.c_str(), map.width, map.height);
+  if (invalid > 0) *note += format("; %zu NaN, infinite or negative texels count as black", invalid);
+  if (map.width > kWidestLabMap) {
+    const int f = (map.width + kWidestLabMap - 1) / kWidestLabMap;
+    Image small((map.width + f - 1) / f, (map.height + f - 1) / f);
+    for (int y = 0; y < small.height; ++y)
+      for (int x = 0; x < small.width; ++x) {
+        Color sum(0.0f);
+        int n = 0;
+        for (int yy = y * f; yy < std::min(map.height, (y + 1) * f); ++yy)
+          for (int xx = x * f; xx < std::min(map.width, (x + 1) * f); ++xx) sum += map.at(xx, yy), ++n;
+        small.at(x, y) = sum / float(n);
+      }
+    *note += format(", averaged %d x %d into each pixel: %d x %d for the test's bins", f, f, small.width,
+                    small.height);
+    map = std::move(small);
+  }
+  *note += ")";
+  return map;
+}
+
 Warp environmentWarp() {
-  return {"environment", "T7.5", "sampleEnvironment against environmentPdf over the sphere",
-          {{"map", 0, 0, 3, true, false, "0 sky with a sun, 1 bright poles, 2 constant, 3 one lit pixel"}},
-          [](const Values& p) {
-            const auto distribution = std::make_shared<EnvironmentDistribution>(
-                buildEnvironmentDistribution(labMap(count(p, "map"))));
-            WarpSetup s;
-            s.domain = Domain::Sphere;
-            s.sphereSubdivision = 32;  // a piecewise-constant pdf: fine midpoints per cell
-            s.sample = [distribution](Vec2 u) -> std::optional<Vec3> {
-              const std::optional<EnvironmentSample> e = sampleEnvironment(*distribution, u);
-              if (!e) return std::nullopt;
-              return e->direction;
-            };
-            s.pdf = pointwise([distribution](const Vec3& w) { return double(environmentPdf(*distribution, w)); });
-            s.mismatchMeans = "the pdf misses the Jacobian of the map: pdf = p(u, v) / (2 pi^2 sin theta); or the "
-                              "CDF is off by one row or column";
-            return s;
-          }};
+  Warp warp{"environment", "T7.5", "sampleEnvironment against environmentPdf over the sphere",
+            {{"map", 0, 0, 3, true, false,
+              "0 sky with a sun, 1 bright poles, 2 constant, 3 one lit pixel (--map FILE: your own)"}},
+            [](const Values& p, const WarpFiles& files) {
+              WarpSetup s;
+              const Image map = files.environmentMap.empty() ? labMap(count(p, "map"))
+                                                             : userMap(files.environmentMap, &s.note);
+              const auto distribution =
+                  std::make_shared<EnvironmentDistribution>(buildEnvironmentDistribution(map));
+              s.domain = Domain::Sphere;
+              // A piecewise-constant pdf: fine midpoints per cell.
+              s.sphereSubdivision = files.environmentMap.empty() ? 32 : kUserMapMidpoints;
+              s.sample = [distribution](Vec2 u) -> std::optional<Vec3> {
+                const std::optional<EnvironmentSample> e = sampleEnvironment(*distribution, u);
+                if (!e) return std::nullopt;
+                return e->direction;
+              };
+              s.pdf = pointwise([distribution](const Vec3& w) { return double(environmentPdf(*distribution, w)); });
+              s.mismatchMeans = "the pdf misses the Jacobian of the map: pdf = p(u, v) / (2 pi^2 sin theta); or "
+                                "the CDF is off by one row or column";
+              return s;
+            }};
+  warp.takesEnvironmentMap = true;
+  return warp;
 }
 
 }  // namespace
 
 const std::vector<Warp>& allWarps() {
   static const std::vector<Warp> warps = {pdfCdfWarp(),          annulusWarp(),         uniformHemisphereWarp(),
-                                          discreteWarp(),        pixelSampleWarp(),     lightDirectionsWarp(),
+                                          discreteWarp(),        pixelSampleWarp(),     lightPointsWarp(),
+                                          lightDirectionsWarp(),
                                           cosineHemisphereWarp(), mirrorWarp(),          glassWarp(),
                                           environmentWarp()};
   return warps;

@@ -466,6 +466,8 @@ bool App::runCommand(const ScriptCommand& command) {
     if (!lab_.set(command.args[0], command.number(1))) {
       throw Error("script line " + std::to_string(command.line) + ": the warp has no parameter \"" + command.args[0] + "\"");
     }
+  } else if (verb == "lab-map") {
+    lab_.setEnvironmentMap(command.args[0]);
   } else if (verb == "view") {
     const std::vector<const DebugView*> panelViews = viewsOfTask(selectedTab_);
     auto found = std::find_if(panelViews.begin(), panelViews.end(),

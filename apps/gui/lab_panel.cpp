@@ -3,7 +3,10 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cmath>
+#include <cstdio>
+
+#include "parameter_sliders.h"
+#include "util/error.h"
 
 namespace pathlab::gui {
 
@@ -13,7 +16,7 @@ LabPanel::LabPanel()
         Computed computed;
         computed.generation = job.generation;
         try {
-          computed.result = lab::runWarp(*job.warp, job.values);
+          computed.result = lab::runWarp(*job.warp, job.values, job.files);
         } catch (const std::exception& e) {
           computed.error = e.what();
         }
@@ -33,6 +36,12 @@ bool LabPanel::select(const std::string& name) {
   return true;
 }
 
+void LabPanel::setEnvironmentMap(const std::string& path) {
+  std::snprintf(mapInput_, sizeof mapInput_, "%s", path.c_str());
+  files_.environmentMap = path;
+  recompute();
+}
+
 bool LabPanel::set(const std::string& name, double value) {
   for (const demo::Parameter& p : lab::parametersOf(*warp_)) {
     if (p.name != name) continue;
@@ -45,7 +54,7 @@ bool LabPanel::set(const std::string& name, double value) {
 
 void LabPanel::recompute() {
   for (const demo::Parameter& p : lab::parametersOf(*warp_)) values_.try_emplace(p.name, p.value);
-  worker_.submit({warp_, values_, ++generation_});
+  worker_.submit({warp_, values_, warp_->takesEnvironmentMap ? files_ : lab::WarpFiles{}, ++generation_});
 }
 
 void LabPanel::draw() {
@@ -54,6 +63,7 @@ void LabPanel::draw() {
     shown_ = std::move(*computed);
     view_.invalidate();
     hasResult_ = true;
+    if (!shown_.error.empty()) printWarning(shown_.error);  // also on the terminal (and in scripted sessions' logs)
   }
   ImGui::PushItemWidth(220);
   if (ImGui::BeginCombo("warp", (warp_->name + "  (" + warp_->task + ")").c_str())) {
@@ -63,30 +73,25 @@ void LabPanel::draw() {
     ImGui::EndCombo();
   }
   ImGui::TextWrapped("%s", warp_->summary.c_str());
-  bool changed = false;
-  int shown = 0;
-  for (const demo::Parameter& parameter : lab::parametersOf(*warp_)) {
-    double& value = values_[parameter.name];
-    if (shown++ % 2 == 1) ImGui::SameLine();
-    const ImGuiSliderFlags flags = parameter.logarithmic ? ImGuiSliderFlags_Logarithmic : 0;
-    if (parameter.integer) {
-      int v = int(std::lround(value));
-      if (ImGui::SliderInt(parameter.name.c_str(), &v, int(parameter.min), int(parameter.max), "%d", flags)) {
-        value = v, changed = true;
-      }
-    } else {
-      float v = float(value);
-      if (ImGui::SliderFloat(parameter.name.c_str(), &v, float(parameter.min), float(parameter.max), "%.3f", flags)) {
-        value = v, changed = true;
-      }
+  bool changed = demo::drawParameterSliders(lab::parametersOf(*warp_), values_, 2);
+  if (warp_->takesEnvironmentMap) {
+    // The user's own map instead of the built-in ones (Enter loads it; empty: the built-in maps again).
+    ImGui::PushItemWidth(360);
+    if (ImGui::InputTextWithHint("map file", "your own map: an .exr, .hdr or .png; Enter loads it", mapInput_,
+                                 sizeof mapInput_, ImGuiInputTextFlags_EnterReturnsTrue)) {
+      files_.environmentMap = mapInput_;
+      changed = true;
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", parameter.help.c_str());
+    ImGui::PopItemWidth();
   }
   ImGui::PopItemWidth();
   if (changed) recompute();
   ImGui::Separator();
   if (!worker_.idle()) ImGui::TextDisabled("computing...");
-  if (!shown_.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", shown_.error.c_str());
+  if (!shown_.error.empty()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", shown_.error.c_str());
+    return;
+  }
   if (!hasResult_) return;
   const ImVec4 verdict = shown_.result.accepted ? ImVec4(0.45f, 0.85f, 0.45f, 1.0f) : ImVec4(1.0f, 0.45f, 0.35f, 1.0f);
   ImGui::PushStyleColor(ImGuiCol_Text, verdict);

@@ -22,11 +22,14 @@ class LabPanel {
   // Script: choose a warp (false: no such warp), set one of its parameters (false: no such parameter).
   bool select(const std::string& warp);
   bool set(const std::string& name, double value);
+  // Script: the environment warp on the user's own map (empty: the built-in maps).
+  void setEnvironmentMap(const std::string& path);
 
  private:
   struct Job {
     const lab::Warp* warp;
     demo::Values values;
+    lab::WarpFiles files;
     uint64_t generation;
   };
   struct Computed {
@@ -38,6 +41,8 @@ class LabPanel {
 
   const lab::Warp* warp_;
   demo::Values values_;
+  lab::WarpFiles files_;  // the map file, kept while other warps are shown
+  char mapInput_[1024] = "";
   BackgroundWorker<Job, Computed> worker_;
   uint64_t generation_ = 0;
   Computed shown_;

@@ -11,7 +11,7 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
   static const std::map<std::string, size_t> arity = {
       {"panel", 1},  {"view", 1},     {"click", 2},      {"orbit", 2}, {"view-orbit", 2}, {"depth", 1},
       {"exposure", 1}, {"wait", 0},   {"wait-spp", 1}, {"wait-panel", 0},   {"screenshot", 1}, {"quit", 0},
-      {"lab", 1},      {"lab-set", 2}};
+      {"lab", 1},      {"lab-set", 2},  {"lab-map", 1}};
   std::vector<ScriptCommand> commands;
   std::istringstream lines(text);
   std::string line;
@@ -28,7 +28,8 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
       throw Error(where + command.verb + " takes " + std::to_string(known->second) + " argument(s), got " +
                   std::to_string(command.args.size()));
     }
-    const bool textArgument = command.verb == "view" || command.verb == "screenshot" || command.verb == "lab";
+    const bool textArgument = command.verb == "view" || command.verb == "screenshot" || command.verb == "lab" ||
+                              command.verb == "lab-map";
     for (size_t i = 0; i < command.args.size(); ++i) {
       const std::string& arg = command.args[i];
       if (command.verb == "lab-set" && i == 0) continue;  // the parameter's name

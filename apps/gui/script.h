@@ -11,6 +11,7 @@
 //   wait-spp 8         until the render has 8 samples per pixel
 //   lab environment    show the sampling lab's tab, on that warp
 //   lab-set map 3      set one of the warp's parameters
+//   lab-map F.exr      the environment warp on a map file
 //   wait-panel         until the panel's view (or the lab's test) is computed
 //   screenshot F.png   save the window
 //   quit

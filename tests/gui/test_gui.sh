@@ -85,14 +85,21 @@ lab annulus
 lab-set mistake 1
 wait-panel
 screenshot OUT/lab-mistake.png
+lab environment
+lab-map ROOT/media/envmaps/sky-sun.exr
+wait-panel
+screenshot OUT/lab-map.png
+lab-map ROOT/no-such-map.exr
+wait-panel
 quit
 SCRIPT
-sed -i "s|OUT|$out|g" "$out/session.txt"
+sed -i "s|OUT|$out|g; s|ROOT|$root|g" "$out/session.txt"
 if ! xrun "$gui" --script "$out/session.txt" --timeout 300 > "$out/session.log" 2> "$out/session.err"; then
   fail "scripted session exited with $?"; cat "$out/session.err"
 fi
 grep -q "click 140 200 -> pixel 140,200: 16 samples" "$out/session.log" || fail "the click was not inspected"
-for f in panel1 paths-front paths-side lab lab-mistake; do
+grep -q "no-such-map.exr: cannot open" "$out/session.err" || fail "a missing map file in the lab was not reported"
+for f in panel1 paths-front paths-side lab lab-mistake lab-map; do
   [[ -s $out/$f.png ]] || { fail "no screenshot $f.png"; continue; }
   size=$(identify -format "%wx%h" "$out/$f.png")
   [[ $size == 1500x900 ]] || fail "$f.png is $size, not the 1500x900 window"
@@ -106,6 +113,8 @@ d=$(differ "$out/paths-side.png" "$out/lab.png" $pixels)
 expect "the sampling lab's tab changed the window ($d of the pixels)" "$d > 0.05"
 d=$(differ "$out/lab.png" "$out/lab-mistake.png" $pixels)
 expect "another warp, with its mistake, redrew the lab ($d of the pixels)" "$d > 0.02"
+d=$(differ "$out/lab-mistake.png" "$out/lab-map.png" $pixels)
+expect "the environment warp on a map file redrew the lab ($d of the pixels)" "$d > 0.02"
 # The paths view draws the clicked pixel's paths: camera rays (task 1), hits
 # (task 2) and the path tracer (tasks 4 and 5). On stubs there is next to
 # nothing to orbit.

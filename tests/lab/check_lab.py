@@ -10,14 +10,18 @@ REJECTED under all three.
 1. Every warp `pathlab lab --list` names, on the reference this build
    links; and once with its figure and CSV written (a PNG, and one CSV line
    per cell with the counts summing to the samples drawn).
-2. The recitation's examples with their classic mistake switched on
-   (--set mistake=1: an unnormalised CDF, the annulus without its Jacobian,
-   the hemisphere without sin theta, blocks that do not sum to 1): rejected.
+2. The reference on more settings (every light shape; the environment on
+   maps read from files, one wider than the lab's bins resolve, one hot
+   pixel): accepted. The lab's own warps with their classic mistake switched
+   on (--set mistake=K: an unnormalised CDF, the annulus without its
+   Jacobian, the hemisphere without sin theta, blocks that do not sum to 1,
+   light triangles chosen by count or points without sqrt, a sphere light
+   uniform in theta): rejected.
 3. Every case of CASES: the pathlab-lab program linked with that task file
    (TESTS_BUILD_DIR/pathlab-lab-KIND-NN-name-FILE; KIND tasks: the stub)
    gives the verdict listed, without crashing.
-4. Bad input (an unknown warp, an unknown or out-of-range parameter): a
-   message and exit code 1.
+4. Bad input (an unknown warp, an unknown or out-of-range parameter; a map
+   for a warp that reads none, missing or black): a message and exit code 1.
 Fixed seeds, so the test itself cannot flake; the lab's rate of rejecting a
 correct warp, measured over many seeds, is in docs/debugger.md."""
 import csv
@@ -27,12 +31,38 @@ import sys
 import tempfile
 from pathlib import Path
 
-MISTAKES = ["pdf-cdf", "annulus", "uniform-hemisphere", "discrete"]
+SOURCE = Path(__file__).resolve().parents[2]
+# The classic mistakes the lab's own warps switch on with --set mistake=K.
+MISTAKES = [("pdf-cdf", "mistake=1"), ("annulus", "mistake=1"), ("uniform-hemisphere", "mistake=1"),
+            ("discrete", "mistake=1"), ("light-points", "shape=1", "mistake=1"),
+            ("light-points", "shape=1", "mistake=2"), ("light-points", "shape=0", "mistake=2"),
+            ("light-points", "shape=2", "mistake=1")]
+# Warps on settings beyond their defaults the reference must pass: every
+# light shape, and the environment on users' maps (wider than the lab's
+# bins resolve: averaged down; a hot pixel).
+REFERENCE_SETTINGS = [("light-points", "--set", "shape=1"), ("light-points", "--set", "shape=2"),
+                      ("environment", "--map", "media/envmaps/sky-sun.exr"),
+                      ("environment", "--map", "media/envmaps/studio.exr"),
+                      ("environment", "--map", "media/envmaps/hot-pixel.exr")]
+
+
+def options(*settings):
+    """NAME=VALUE settings as --set options; options already written (--set X, --map FILE) kept."""
+    out, i = [], 0
+    while i < len(settings):
+        if settings[i].startswith("--"):
+            value = settings[i + 1]
+            out += [settings[i], str(SOURCE / value) if settings[i] == "--map" else value]
+            i += 2
+        else:
+            out += ["--set", settings[i]]
+            i += 1
+    return out
 
 
 def lab(program, warp, *settings, figure=None):
     command = [str(program), "lab"] if Path(program).name == "pathlab" else [str(program)]
-    command += [warp, *[a for s in settings for a in ("--set", s)]]
+    command += [warp, *options(*settings)]
     command += ["-o", str(figure)] if figure else ["--no-figure"]
     run = subprocess.run(command, capture_output=True, text=True, timeout=300)
     verdict = "ACCEPTED" if "\nACCEPTED" in "\n" + run.stdout else ("REJECTED" if "\nREJECTED" in "\n" + run.stdout else "?")
@@ -58,7 +88,7 @@ def main() -> int:
     failures = []
     listing = subprocess.run([str(pathlab), "lab", "--list"], capture_output=True, text=True, check=True).stdout
     warps = [line.split()[0] for line in listing.splitlines() if line.strip()]
-    if len(warps) < 10:
+    if len(warps) < 11:
         failures.append(f"pathlab lab --list names {len(warps)} warps: {warps}")
 
     with tempfile.TemporaryDirectory(prefix="pathlab-lab-") as temp:
@@ -81,27 +111,37 @@ def main() -> int:
                 if drawn != 20000 or abs(expected - 20000) > 200:
                     failures.append(f"{warp}: the CSV's counts sum to {drawn:g} observed, {expected:g} expected")
 
-        for warp in MISTAKES:
-            seen, out = verdicts(pathlab, warp, "mistake=1")
-            print(f"  {warp} with its mistake: {' '.join(seen)}")
+        for warp, *settings in REFERENCE_SETTINGS:
+            seen, out = verdicts(pathlab, warp, *settings)
+            print(f"  reference {warp} {' '.join(settings)}: {' '.join(seen)}")
+            if not judged("accept", seen):
+                failures.append(f"reference {warp} {settings}: {seen}\n{out}")
+
+        for warp, *settings in MISTAKES:
+            seen, out = verdicts(pathlab, warp, *settings)
+            print(f"  {warp} with {' '.join(settings)}: {' '.join(seen)}")
             if not judged("reject", seen):
-                failures.append(f"{warp} mistake=1: {seen}\n{out}")
+                failures.append(f"{warp} {settings}: {seen}\n{out}")
 
     for line in cases.read_text().splitlines():
         if not line.startswith(("mutants/", "alternates/", "tasks/")):
             continue
         fields = line.split()
         path, warp, want = fields[0], fields[1], fields[2]
-        settings = [fields[i + 1] for i in range(3, len(fields) - 1) if fields[i] == "--set"]
+        settings = fields[3:]  # --set NAME=VALUE, --map FILE (from the repository's root)
         kind, task, name = path.removesuffix(".cpp").split("/")
         program = build / f"pathlab-lab-{kind}-{task}-{name}"
         seen, out = verdicts(program, warp, *settings)
-        print(f"  {path} on {warp}: {' '.join(seen)} (want {want})")
+        print(f"  {path} on {warp} {' '.join(settings)}: {' '.join(seen)} (want {want})")
         if not judged(want, seen):
             failures.append(f"{path} on {warp}: {seen}, want {want}\n{out[-1500:]}")
 
+    black = SOURCE / "media/envmaps/black.exr"
     for bad, why in ((["lab", "no-such-warp"], "no warp"), (["lab", "annulus", "--set", "r1=7"], "must be between"),
-                     (["lab", "annulus", "--set", "colour=1"], "has the parameters")):
+                     (["lab", "annulus", "--set", "colour=1"], "has the parameters"),
+                     (["lab", "annulus", "--map", str(black)], "--map is for the environment warp"),
+                     (["lab", "environment", "--map", str(SOURCE / "no-such-map.exr")], "cannot open"),
+                     (["lab", "environment", "--map", str(black)], "black everywhere")):
         run = subprocess.run([str(pathlab), *bad, "--no-figure"], capture_output=True, text=True, timeout=60)
         if run.returncode != 1 or why not in run.stderr:
             failures.append(f"pathlab {' '.join(bad)}: exit {run.returncode}, {run.stderr.strip()[:200]!r}")
