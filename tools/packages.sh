@@ -9,9 +9,13 @@ pathlab_core=(build-essential cmake ninja-build pkg-config python3 libglm-dev li
 # The whole project: the core, Embree for the benchmark, GLFW and Dear ImGui for the GUI, plots,
 # fast_float (the OBJ reader's numbers: optional with GCC, needed with libc++; Ubuntu 22.04 lacks it).
 pathlab_build=("${pathlab_core[@]}" git libembree-dev libglfw3-dev libimgui-dev python3-matplotlib libfast-float-dev)
+# The write-up (tools/writeup): Markdown for the students' answers, Chromium to print the PDF.
+pathlab_writeup=(python3-markdown chromium)
 # The tests: the GUI on a virtual display (Xvfb, Mesa's software OpenGL) looked
-# at with ImageMagick, and the grader's sandbox (bubblewrap; libseccomp for its uid mode's pathlab-confine).
-pathlab_test=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick bubblewrap libseccomp-dev)
+# at with ImageMagick, the grader's sandbox (bubblewrap; libseccomp for its uid mode's pathlab-confine), and
+# the write-up in a browser (Chromium; tidy validates its HTML, poppler-utils reads its PDF).
+pathlab_test=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick bubblewrap libseccomp-dev "${pathlab_writeup[@]}" tidy
+              poppler-utils)
 # Grading: the core and the sandbox (bubblewrap; util-linux for setpriv, prlimit and ipcrm;
 # libseccomp for pathlab-confine, the uid mode's system-call filter).
 pathlab_grading=("${pathlab_core[@]}" bubblewrap util-linux libseccomp-dev)

@@ -3,6 +3,7 @@
 #
 #   bash tools/quickstart.sh render   install, build, render the built-in Cornell box to render.png
 #   bash tools/quickstart.sh test     install, build, run every test (ctest)
+#   bash tools/quickstart.sh writeup [--stubs]   install, build, make the write-up (page and PDF, tools/writeup)
 #
 # Installs the Debian packages PathLab builds with (only when one is
 # missing), then configures and builds through the release preset.
@@ -29,8 +30,14 @@ case "${1:-}" in
     build
     ctest --preset release --parallel "$(nproc)"
     ;;
+  writeup)
+    shift
+    install_packages "${pathlab_build[@]}" "${pathlab_writeup[@]}"
+    build
+    python3 tools/writeup "$@"
+    ;;
   *)
-    echo "usage: bash tools/quickstart.sh render|test" >&2
+    echo "usage: bash tools/quickstart.sh render|test|writeup [--stubs]" >&2
     exit 2
     ;;
 esac

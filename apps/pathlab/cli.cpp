@@ -1,12 +1,15 @@
 #include "cli.h"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <regex>
 #include <string>
+#include <thread>
 
 #include "debug/debug_views.h"
 #include "lab_cli.h"
@@ -32,6 +35,7 @@ struct RenderArgs {
   std::string output = "render.png";
   std::string seed;  // parsed by parseSeed: CLI11 would wrap "-1" to 2^64 - 1
   std::string reference;
+  std::string stats;  // --stats FILE.json: the summary's numbers for scripts (tools/writeup)
   std::string integrator = "path";
   std::string accel;  // empty: defaultTraversal
   std::string sampler = "sobol";
@@ -150,6 +154,12 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
     }
   }
 
+  std::ofstream statsFile;  // opened before an hour of rendering, not after
+  if (!args.stats.empty()) {
+    statsFile.open(args.stats);
+    if (!statsFile) throw Error("--stats " + shown(args.stats, 200) + ": cannot write it");
+  }
+
   rendering.store(true);
   RenderResult result = render(scene, options);
   const RenderStats& stats = result.stats;
@@ -174,9 +184,25 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
                 formatRate(double(stats.samples) / stats.seconds).c_str(),
                 formatRate(double(stats.rays) / stats.seconds).c_str());
   }
+  std::optional<ImageError> error;
   if (reference) {
-    ImageError error = compareImages(result.image, *reference);
-    std::printf("vs %s: RMSE %.6g, relMSE %.6g\n", args.reference.c_str(), error.rmse, error.relMse);
+    error = compareImages(result.image, *reference);
+    std::printf("vs %s: RMSE %.6g, relMSE %.6g\n", args.reference.c_str(), error->rmse, error->relMse);
+  }
+  if (!args.stats.empty()) {
+    nlohmann::json j = {{"output", args.output}, {"scene", scene.source}, {"width", settings.width},
+                        {"height", settings.height}, {"spp", stats.completedSpp}, {"max_depth", settings.maxDepth},
+                        {"light_samples", settings.lightSamples}, {"integrator", integratorName(options.integrator)},
+                        {"traversal", traversalName(options.traversal)},
+                        {"sampler", sampleSequenceName(options.sampler)}, {"tasks", PATHLAB_TASK_SUMMARY},
+                        {"threads", options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency())}, {"seconds", stats.seconds},
+                        {"build_seconds", stats.buildSeconds}, {"samples", stats.samples}, {"rays", stats.rays},
+                        {"samples_per_second", double(stats.samples) / stats.seconds},
+                        {"rays_per_second", double(stats.rays) / stats.seconds},
+                        {"non_finite_samples", stats.nonFiniteSamples}};
+    if (error) j["vs_reference"] = {{"rmse", error->rmse}, {"rel_mse", error->relMse}};
+    statsFile << j.dump(2) << "\n";
+    if (!statsFile.flush()) throw Error("--stats " + shown(args.stats, 200) + ": cannot write it");
   }
   return 0;
 }
@@ -246,6 +272,8 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel, std::atomic<b
   app.add_option("-o,-w,--output", render.output, "Output image: .png (display) or .exr (linear)");
   app.add_option("--seed", render.seed, "Random seed");
   app.add_option("--ref", render.reference, "Reference image: print RMSE and relMSE after the render");
+  app.add_option("--stats", render.stats, "Also write the render's numbers (time, samples/s, rays/s, NaN or Inf "
+                                          "samples, settings, tasks) as JSON to this file");
   app.add_option("--integrator", render.integrator, "path (default), direct (task 4 only), preview (eye light, tasks 1-3), normals");
   app.add_option("--accel", render.accel,
                  "How rays walk task 3's tree: task3 (your intersectClosest/intersectAny) or fast (the framework's "

@@ -51,6 +51,11 @@ out=$("$pathlab" -q -s 3 -r 64 48 -t 2 --seed 5 -o "$work/two.exr" --ref "$work/
 grep -q "RMSE 0, relMSE 0$" <<< "$out" && pass || fail "1-thread and 2-thread EXR renders differ: $out"
 out=$("$pathlab" -s 2 -d 64x48 -o "$work/stats.png" 2>/dev/null)
 grep -q "samples/s" <<< "$out" && grep -q "rays/s" <<< "$out" && pass || fail "render summary lacks samples/s and rays/s: $out"
+"$pathlab" -q -s 2 -d 64x48 -o "$work/stats2.png" --stats "$work/stats.json" &&
+  python3 -c 'import json, sys; j = json.load(open(sys.argv[1]))
+assert (j["width"], j["height"], j["spp"], j["samples"], j["non_finite_samples"]) == (64, 48, 2, 64 * 48 * 2, 0), j
+assert j["samples_per_second"] > 0 and j["rays"] >= j["samples"] and j["tasks"].startswith("1:"), j' "$work/stats.json" &&
+  pass || fail "--stats does not write the render's numbers as JSON"
 out=$("$pathlab" -q -s 2 -d 64x48 -o "$work/again.exr" --ref "$work/one.exr" 2>&1)
 grep -q "RMSE" <<< "$out" && grep -q "relMSE" <<< "$out" && pass || fail "--ref does not print RMSE and relMSE: $out"
 out=$("$pathlab" -q -s 1 -d 32x24 --integrator normals -o "$work/normals.png" 2>&1) && pass || fail "normals integrator: $out"
@@ -189,6 +194,7 @@ bad_input "--seed -1" "--seed: expected an integer" --seed -1
 bad_input "-d with an empty value" "-d: expected WIDTHxHEIGHT" -d ""
 "$pathlab" -q -s 1 -d 20x10 -o "$work/small.exr" 2>/dev/null
 bad_input "--ref of another size (before rendering: no output)" "--ref: " --ref "$work/small.exr"
+bad_input "--stats in a missing folder (before rendering)" "--stats " --stats "$work/no-such-folder/stats.json"
 # An OBJ naming a FIFO as its mtllib: materials come from the scene, the library is never opened.
 printf 'mtllib pipe.mtl\nv -1 -1 -3\nv 1 -1 -3\nv 0 1 -3\nf 1 2 3\n' > "$g/mtl-pipe.obj"
 printf '{"meshes": [{"obj": "mtl-pipe.obj"}]}' > "$g/mtl-pipe.json"

@@ -284,8 +284,10 @@ void checkImage(ImageCase c) {
       double whole = 0, wholeNoise = 0;
       for (const Comparison& w : v.whole) whole = std::max(whole, std::abs(w.z()));
       for (const Comparison& w : v.whole) wholeNoise = std::max(wholeNoise, w.noiseRatio());
-      std::fprintf(f, "%s/%s %.3f %.3f %.3f %.4g %.4g %.4g\n", c.suite.c_str(), c.name.c_str(), std::abs(v.worstZ),
-                   whole, v.limit, v.worstBlockNoise, wholeNoise, v.noise());
+      // ... then the verdict (tools/writeup): NaN or Inf samples, and 1 when the image passes.
+      std::fprintf(f, "%s/%s %.3f %.3f %.3f %.4g %.4g %.4g %llu %d\n", c.suite.c_str(), c.name.c_str(),
+                   std::abs(v.worstZ), whole, v.limit, v.worstBlockNoise, wholeNoise, v.noise(),
+                   static_cast<unsigned long long>(yours.nonFinite), yours.nonFinite == 0 && v.pass() ? 1 : 0);
       std::fclose(f);
     }
   }
