@@ -241,11 +241,14 @@ def convergence_html(c, owners) -> str:
         return f'<div class="notice missing"><strong>No convergence figure:</strong> {e(c["error"])}</div>'
     width, height = c["size"]
 
-    def whose(tasks):
-        return ", ".join(f'task {t} {"yours" if owners.get(t) == "student" else "reference"}' for t in tasks) or "—"
+    def whose(row):
+        if row["default"] and not row["relies_on"]:
+            return "the build's own path tracer (tasks 1-5, as linked above)"
+        return "the framework's tracer with " + ", ".join(
+            f'task {t} {"yours" if owners.get(t) == "student" else "reference"}' for t in row["relies_on"])
     rows = "".join(f'<tr><td>{e(r["name"])}{" (default)" if r["default"] else ""}</td>'
                    f'<td class="number">{r["efficiency"]:.4g}</td><td class="number">{r["slope"]:.2f}</td>'
-                   f'<td>{e(whose(r["relies_on"]))}</td></tr>' for r in c["table"])
+                   f'<td>{e(whose(r))}</td></tr>' for r in c["table"])
     summary = f'<p>{e(c["summary"])}.</p>' if c["summary"] else ""
     return (f'<figure class="figure"><img src="{c["image"]}" width="{width}" height="{height}" alt="Relative mean '
             f'squared error against samples per pixel and against seconds, one line per sampling strategy">'
