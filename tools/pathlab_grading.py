@@ -188,6 +188,7 @@ class Grader:
         self.start = time.time()
         self.results = []
         self.notes = []  # what the submission's archive left out
+        self.leaderboard = {}  # name: entry; measured by the judges (LEADERBOARD lines), ungraded
         self.total = 0.0
         self.build = Path(args.build_dir).resolve()
         self.objects = self.build / "submission-objects"
@@ -471,6 +472,13 @@ class Grader:
         out = out.replace(f"{self.pictures}/", f"{self.pictures.name}/")  # named beside results.json
         lines = verdict.read_text().splitlines() if verdict.exists() else []
         ran = [l for l in lines if l.startswith(("PASS ", "FAIL "))]
+        for line in lines:  # "LEADERBOARD asc|desc VALUE NAME", in Gradescope's results.json form
+            parts = line.split(" ", 3)
+            if parts[0] == "LEADERBOARD" and len(parts) == 4 and parts[1] in ("asc", "desc"):
+                try:
+                    self.leaderboard[parts[3]] = {"name": parts[3], "value": float(parts[2]), "order": parts[1]}
+                except ValueError:
+                    pass
         if watch.exceeded:
             self.record(task, name, 0, points, watch.message() + "\n" + out, visibility=visibility, timing=timing)
         elif code is None:
@@ -492,6 +500,8 @@ class Grader:
                       f"{sum(r['max_score'] for r in self.results):g} points",
             "tests": self.results,
         }
+        if self.leaderboard:
+            report["leaderboard"] = list(self.leaderboard.values())
         if self.sandbox.warning:
             report["output"] += "\n" + self.sandbox.warning
         if self.notes:

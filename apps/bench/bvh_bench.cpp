@@ -313,6 +313,11 @@ int runBvhBench(const BvhBenchOptions& options) {
     std::printf(", Embree %.1f ms (%s/Embree time %.2f)", *buildEmbree * 1e3, label.c_str(), buildTask / *buildEmbree);
   }
   std::printf("\n%s", formatBvhStatistics(bvhStatistics(bvh)).c_str());
+  // The tree alone, walked by the framework on the primary rays: the score a student can act on (and
+  // the grader's leaderboard measure), whatever their traversal does.
+  const TreeCost cost = treeCost(bvh, geometry, sets[0].rays);
+  std::printf("score of %s tree on the primary rays: %s\n", label == "reference" ? "the reference's" : label == "yours" ? "your" : "task 3's",
+              formatTreeCost(cost).c_str());
   std::printf("fast path layout: +%.1f ms to gather the leaves and collapse (%s + layout", buildWide * 1e3,
               label.c_str());
   if (buildEmbree) std::printf(" / Embree time %.2f", (buildTask + buildWide) / *buildEmbree);
@@ -367,6 +372,8 @@ int runBvhBench(const BvhBenchOptions& options) {
   // Whose code ran: "yours" (the student's file), "reference" (solutions/)
   // or "unknown" (a binary built without the record); ratios are task 3 / Embree.
   json["task3"] = codeName(tasks[3]);
+  json["tree_cost"] = {{"nodes_per_ray", cost.nodesPerRay}, {"primitive_tests_per_ray", cost.primitiveTestsPerRay},
+                       {"score", cost.score()}, {"sah_cost", sahCost(bvh)}};
   json["tasks"] = tasksJson(tasks, {2, 3});
   json["build_ms_task3"] = buildTask * 1e3;
   json["build_ms_embree"] = buildEmbree ? Json(*buildEmbree * 1e3) : Json(nullptr);

@@ -375,13 +375,19 @@ int runConvergeBench(const ConvergeOptions& options) {
 
   // Efficiency = 1 / (relMSE x time): for unbiased estimators it settles to a
   // constant, and the ratio of two is the ratio of times to the same error.
-  std::vector<std::optional<double>> efficiency(strategies.size()), slope(strategies.size());
-  std::printf("%-18s %12s %7s  %s\n", "strategy", "efficiency", "slope",
-              "(median of the last 3 points; slope of log relMSE against log spp, -1 for plain Monte Carlo; whose code ran)");
+  // relMSE x spp is the error per sample (time-free: comparable across machines), samples/s the speed:
+  // efficiency is their ratio, so a peer comparison can be redone on any machine from these two.
+  const double pixels = double(scene.render.width) * double(scene.render.height);
+  std::vector<std::optional<double>> efficiency(strategies.size()), slope(strategies.size()),
+      errorPerSample(strategies.size()), samplesPerSecond(strategies.size());
+  std::printf("%-18s %12s %7s %12s %11s  %s\n", "strategy", "efficiency", "slope", "relMSE*spp", "samples/s",
+              "(medians of the last 3 points; slope of log relMSE against log spp, -1 for plain Monte Carlo; whose "
+              "code ran)");
   for (size_t i = 0; i < strategies.size(); ++i) {
     const Strategy& s = strategies[i];
     if (!availability[i].available) {
-      std::printf("%-18s %12s %7s  %s\n", s.name.c_str(), "unavailable", "", availability[i].reason.c_str());
+      std::printf("%-18s %12s %7s %12s %11s  %s\n", s.name.c_str(), "unavailable", "", "", "",
+                  availability[i].reason.c_str());
       continue;
     }
     std::vector<double> last;
@@ -390,13 +396,26 @@ int runConvergeBench(const ConvergeOptions& options) {
     }
     std::sort(last.begin(), last.end());
     if (!last.empty()) efficiency[i] = last[last.size() / 2];
+    std::vector<double> perSample, rate;
+    for (size_t p = curves[i].size() >= 3 ? curves[i].size() - 3 : 0; p < curves[i].size(); ++p) {
+      const Point& point = curves[i][p];
+      if (point.relMse > 0.0 && std::isfinite(point.relMse)) perSample.push_back(point.relMse * point.spp);
+      if (point.seconds > 0.0) rate.push_back(double(point.spp) * pixels / point.seconds);
+    }
+    std::sort(perSample.begin(), perSample.end()), std::sort(rate.begin(), rate.end());
+    if (!perSample.empty()) errorPerSample[i] = perSample[perSample.size() / 2];
+    if (!rate.empty()) samplesPerSecond[i] = rate[rate.size() / 2];
     slope[i] = convergenceSlope(curves[i]);
     char slopeText[32] = "-";
     if (slope[i]) std::snprintf(slopeText, sizeof slopeText, "%.2f", *slope[i]);
     const std::string who = s.tasks.empty() ? "default strategy: " + describeTasks(linked, {4, 5, 7})
                             : s.framework     ? "framework tracer, pieces of " + describeTasks(linked, s.tasks)
                                               : describeTasks(linked, s.tasks);
-    std::printf("%-18s %12s %7s  %s\n", s.name.c_str(), brief(efficiency[i], "-").c_str(), slopeText, who.c_str());
+    char perSampleText[32] = "-", rateText[32] = "-";
+    if (errorPerSample[i]) std::snprintf(perSampleText, sizeof perSampleText, "%.4g", *errorPerSample[i]);
+    if (samplesPerSecond[i]) std::snprintf(rateText, sizeof rateText, "%.3gM", *samplesPerSecond[i] / 1e6);
+    std::printf("%-18s %12s %7s %12s %11s  %s\n", s.name.c_str(), brief(efficiency[i], "-").c_str(), slopeText,
+                perSampleText, rateText, who.c_str());
   }
   std::string comparison;
   if (strategies.size() >= 2) {
@@ -454,7 +473,9 @@ int runConvergeBench(const ConvergeOptions& options) {
                     {"available", availability[i].available},
                     {"points", points},
                     {"efficiency", efficiency[i] ? Json(*efficiency[i]) : Json(nullptr)},
-                    {"slope", slope[i] ? Json(*slope[i]) : Json(nullptr)}};
+                    {"slope", slope[i] ? Json(*slope[i]) : Json(nullptr)},
+                    {"relmse_times_spp", errorPerSample[i] ? Json(*errorPerSample[i]) : Json(nullptr)},
+                    {"samples_per_second", samplesPerSecond[i] ? Json(*samplesPerSecond[i]) : Json(nullptr)}};
       if (!availability[i].available) entry["reason"] = availability[i].reason;
       if (!availability[i].note.empty()) entry["note"] = availability[i].note;
       entries.push_back(entry);

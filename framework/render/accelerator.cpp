@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
 #include <mutex>
 
 #include "render/scene_intersect.h"
@@ -71,6 +72,100 @@ double sahCost(const Bvh& bvh) {
     cost += double(node.bounds.surfaceArea()) / rootArea * (node.isLeaf() ? double(node.count) : 1.0);
   }
   return cost;
+}
+
+namespace {
+
+// Where `ray` enters `box` within [tMin, tMax], or a negative number. Slabs
+// with the inverse direction; a zero component's infinities are handled by
+// min/max ordering (0 * inf gives NaN, which std::min/max drop to the other side).
+float enterBox(const Aabb& box, const Ray& ray, const Vec3& inverse, float tMin, float tMax) {
+  for (int axis = 0; axis < 3; ++axis) {
+    float t0 = (box.min[axis] - ray.origin[axis]) * inverse[axis];
+    float t1 = (box.max[axis] - ray.origin[axis]) * inverse[axis];
+    if (t0 > t1) std::swap(t0, t1);
+    if (!(t0 <= t1)) {  // NaN: the origin lies in this slab's plane and the ray is parallel to it
+      if (ray.origin[axis] < box.min[axis] || ray.origin[axis] > box.max[axis]) return -1.0f;
+      continue;
+    }
+    tMin = std::max(tMin, t0);
+    tMax = std::min(tMax, t1);
+    if (tMin > tMax) return -1.0f;
+  }
+  return tMin;
+}
+
+}  // namespace
+
+TreeCost treeCost(const Bvh& bvh, const LeafGeometry& geometry, std::span<const Ray> rays) {
+  TreeCost cost;
+  cost.rays = rays.size();
+  if (bvh.nodes.empty() || rays.empty()) return cost;
+  uint64_t nodes = 0, tests = 0;
+  std::vector<std::pair<uint32_t, float>> stack;
+  for (const Ray& ray : rays) {
+    const Vec3 inverse = 1.0f / ray.direction;
+    float closest = std::numeric_limits<float>::infinity();
+    stack.clear();
+    const float rootEnter = enterBox(bvh.nodes[0].bounds, ray, inverse, 0.0f, closest);
+    if (rootEnter >= 0.0f) stack.push_back({0, rootEnter});
+    while (!stack.empty()) {
+      const auto [index, enter] = stack.back();
+      stack.pop_back();
+      if (enter > closest) continue;
+      ++nodes;
+      const BvhNode& node = bvh.nodes[index];
+      if (node.isLeaf()) {
+        for (uint32_t k = 0; k < node.count; ++k) {
+          ++tests;
+          const std::optional<PrimitiveHit> hit =
+              geometry.intersect(node.leftOrFirst + k, ray, Interval{0.0f, closest});
+          if (hit) closest = hit->t;
+        }
+        continue;
+      }
+      const uint32_t left = node.leftOrFirst, right = left + 1;
+      const float tl = enterBox(bvh.nodes[left].bounds, ray, inverse, 0.0f, closest);
+      const float tr = enterBox(bvh.nodes[right].bounds, ray, inverse, 0.0f, closest);
+      // The farther child first on the stack, so the nearer one is walked first.
+      if (tl >= 0.0f && tr >= 0.0f) {
+        stack.push_back(tl <= tr ? std::pair{right, tr} : std::pair{left, tl});
+        stack.push_back(tl <= tr ? std::pair{left, tl} : std::pair{right, tr});
+      } else if (tl >= 0.0f) {
+        stack.push_back({left, tl});
+      } else if (tr >= 0.0f) {
+        stack.push_back({right, tr});
+      }
+    }
+  }
+  cost.nodesPerRay = double(nodes) / double(rays.size());
+  cost.primitiveTestsPerRay = double(tests) / double(rays.size());
+  return cost;
+}
+
+std::vector<Ray> raysThroughBox(const Aabb& box, int side) {
+  const Vec3 extent = box.max - box.min;
+  const float size = std::max({extent.x, extent.y, extent.z, 1e-30f});
+  const Point3 center = 0.5f * (box.min + box.max);
+  const Point3 eye(center.x, center.y, box.max.z + 2.0f * size);
+  std::vector<Ray> rays;
+  rays.reserve(size_t(side) * size_t(side));
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      // Aimed at the box's middle plane, a grid a little wider than the box.
+      const Point3 target(box.min.x + (float(i) + 0.5f) / float(side) * extent.x * 1.1f - 0.05f * extent.x,
+                          box.min.y + (float(j) + 0.5f) / float(side) * extent.y * 1.1f - 0.05f * extent.y, center.z);
+      rays.push_back(Ray{eye, glm::normalize(target - eye)});
+    }
+  return rays;
+}
+
+std::string formatTreeCost(const TreeCost& cost) {
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "%.1f nodes and %.2f primitive tests per ray: score %.1f (nodes + 10 x tests; lower is better)",
+                cost.nodesPerRay, cost.primitiveTestsPerRay, cost.score());
+  return text;
 }
 
 BvhStatistics bvhStatistics(const Bvh& bvh) {

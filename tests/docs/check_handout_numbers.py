@@ -65,6 +65,12 @@ else:
         near("task 3 triangle tests per ray (intro)", float(intro.group(2)), float(stats.group(2)), 0.15)
     if legend:
         near("task 3 box tests per ray (legend)", float(legend.group(1)), float(stats.group(1)), 0.1)
+    score = quoted("tasks/03-bvh/README.md", r"10 × triangle tests per ray, lower is better — about ([\d.]+) for the scan")
+    measured_score = re.search(r"walked by the framework: .*?score ([\d.]+)", out)
+    if score and measured_score:
+        near("task 3 tree score (nodes + 10 x tests)", float(score.group(1)), float(measured_score.group(1)), 0.1)
+    elif score:
+        failures.append("pathlab debug --task 3 --view heatmap no longer prints the tree's score")
     if shape:
         near("task 3 nodes (thousands)", float(shape.group(1)), int(tree.group(1)) / 1000.0, 0.1)
         near("task 3 depth", float(shape.group(2)), float(tree.group(2)), 0.15)

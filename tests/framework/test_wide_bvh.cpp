@@ -194,3 +194,76 @@ TEST_CASE("task 3's build: primitives whose centroids span less than 1e-37 still
     CHECK(validateBvh(bvh, bounds.size(), &bounds) == "");
   }
 }
+
+// The tree's score (treeCost): the framework's own ordered walk, counted.
+TEST_CASE("tree cost: exact counts on a two-leaf tree; a worse tree scores worse; the rays see all of a box") {
+  // Two triangles far apart in x, one leaf each under a root: a ray down onto the left one enters
+  // the root and the left leaf (2 nodes) and tests 1 triangle; the right leaf's box is missed.
+  TriangleMesh mesh;
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {10, 0, 0}, {11, 0, 0}, {10, 1, 0}};
+  mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
+  const Scene scene = sceneOf({mesh});
+  Bvh bvh;
+  Aabb left, right, all;
+  for (int k = 0; k < 3; ++k) left.grow(mesh.positions[size_t(k)]), right.grow(mesh.positions[size_t(k + 3)]);
+  all.grow(left), all.grow(right);
+  bvh.nodes = {{all, 1, 0}, {left, 0, 1}, {right, 1, 1}};
+  bvh.primitives = {0, 1};
+  const LeafGeometry geometry(scene, bvh.primitives, kLinkedTasks.primitives);
+  const std::vector<Ray> down = {Ray{{0.2f, 0.2f, 5.0f}, {0.0f, 0.0f, -1.0f}}};
+  TreeCost cost = treeCost(bvh, geometry, down);
+  CHECK(cost.rays == 1);
+  CHECK(cost.nodesPerRay == 2.0);
+  CHECK(cost.primitiveTestsPerRay == 1.0);
+  CHECK(cost.score() == 12.0);
+  // A ray missing the root's box costs nothing; an empty tree or no rays score 0.
+  CHECK(treeCost(bvh, geometry, std::vector<Ray>{Ray{{50, 50, 5}, {0, 0, -1}}}).score() == 0.0);
+  CHECK(treeCost(Bvh{}, geometry, down).score() == 0.0);
+  CHECK(treeCost(bvh, geometry, std::vector<Ray>{}).rays == 0);
+
+  // A 16 x 16 grid (512 triangles): the SAH tree against one leaf per 8 triangles in a chain-like
+  // order (the reference tree's leaves re-hung under a left-leaning spine), on rays through the whole
+  // box: every ray's first hit is found either way, but the chain visits far more nodes.
+  const Scene big = sceneOf({grid(16)});
+  std::vector<Aabb> bounds;
+  for (const PrimitiveRef& p : big.primitives) {
+    Aabb b;
+    const TriangleMesh& m = big.meshes[p.mesh];
+    for (int k = 0; k < 3; ++k) b.grow(m.positions[m.triangles[p.index][k]]);
+    bounds.push_back(b);
+  }
+  const Bvh good = buildBvh(bounds);
+  Aabb box;
+  for (const Aabb& b : bounds) box.grow(b);
+  const std::vector<Ray> rays = raysThroughBox(box, 32);
+  CHECK(rays.size() == 32 * 32);
+  const LeafGeometry goodGeometry(big, good.primitives, kLinkedTasks.primitives);
+  const TreeCost goodCost = treeCost(good, goodGeometry, rays);
+  // Every ray aimed inside the grid hits it; those beyond its edge (the fan is 10 % wider) miss.
+  size_t hits = 0;
+  for (const Ray& ray : rays) hits += intersectClosest(good, goodGeometry, ray, Interval{}).has_value();
+  CHECK(hits > rays.size() * 3 / 4);
+  CHECK(hits < rays.size());
+  // The chain: leaf k holds slots [8k, 8k + 8); spine node i has leaf i on the left and the rest on the right.
+  Bvh chain;
+  chain.primitives = good.primitives;
+  const uint32_t leaves = uint32_t(chain.primitives.size() / 8);
+  auto boundsOf = [&](uint32_t first, uint32_t count) {
+    Aabb b;
+    for (uint32_t s = first; s < first + count; ++s) b.grow(bounds[chain.primitives[s]]);
+    return b;
+  };
+  chain.nodes.push_back({boundsOf(0, leaves * 8), 0, 0});
+  for (uint32_t i = 0; i + 1 < leaves; ++i) {
+    const uint32_t at = uint32_t(chain.nodes.size());
+    chain.nodes[at == 1 ? 0 : at - 1].leftOrFirst = at;
+    chain.nodes.push_back({boundsOf(i * 8, 8), i * 8, 8});  // leaf i
+    const bool lastPair = i + 2 == leaves;
+    chain.nodes.push_back({boundsOf((i + 1) * 8, (leaves - i - 1) * 8), lastPair ? (i + 1) * 8 : 0, lastPair ? 8u : 0u});
+  }
+  REQUIRE(validateBvh(chain, chain.primitives.size(), nullptr) == "");
+  const TreeCost chainCost = treeCost(chain, LeafGeometry(big, chain.primitives, kLinkedTasks.primitives), rays);
+  INFO("SAH tree " << formatTreeCost(goodCost) << "; chain " << formatTreeCost(chainCost));
+  CHECK(chainCost.score() > 2.0 * goodCost.score());
+  CHECK(goodCost.primitiveTestsPerRay >= 1.0);
+}

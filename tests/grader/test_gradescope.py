@@ -97,6 +97,10 @@ def schema_problems(report) -> list:
             problems.append(f"test {test.get('name')}: visibility {test['visibility']!r}")
         if "status" in test and test["status"] not in ("passed", "failed"):
             problems.append(f"test {test.get('name')}: status {test['status']!r}")
+    for entry in report.get("leaderboard", []):  # Gradescope's form: name, value, optional order
+        if not (isinstance(entry.get("name"), str) and isinstance(entry.get("value"), (int, float))
+                and entry.get("order", "desc") in ("asc", "desc")):
+            problems.append(f"leaderboard entry {entry!r}")
     names = [t.get("name") for t in tests]
     if len(set(names)) != len(names):
         problems.append("test names are not unique")
@@ -210,9 +214,23 @@ def main() -> int:
             if compiled:
                 failures.append(f"stubs: {len(compiled)} tests report a build failure, e.g. {compiled[0]}")
 
+        boards = {}
         for path in SAME_SCORE_FILES:
             kind = Path(path).parent.parent.name + "-" + Path(path).stem  # e.g. mutants-half-pixel-offset
-            grade(kind, [root / path], env, failures)  # its score is the validity matrix's to judge
+            report = grade(kind, [root / path], env, failures)  # its score is the validity matrix's to judge
+            boards[kind] = {e["name"]: e["value"] for e in (report or {}).get("leaderboard", [])}
+        # The ungraded leaderboard (task 3's tree, measured by the judge): the reference's tree, a
+        # correct builder with other bins close to it, a median split far worse; no entry without task 3.
+        boards["reference"] = {e["name"]: e["value"] for e in (reference or {}).get("leaderboard", [])}
+        tree = "BVH cost per ray: nodes + 10 x triangle tests (scan-like mesh)"
+        ref_value = boards["reference"].get(tree)
+        print(f"leaderboard ({tree}): " + ", ".join(f"{k} {v.get(tree, '-')}" for k, v in boards.items()))
+        if ref_value is None or not 30 < ref_value < 45:
+            failures.append(f"reference: leaderboard {boards['reference']}, expected {tree!r} near 36.7")
+        elif not (abs(boards["alternates-eight-bins"].get(tree, 0) / ref_value - 1) < 0.05
+                  and boards["mutants-median-split"].get(tree, 0) > 2 * ref_value
+                  and boards["mutants-half-pixel-offset"] == {}):
+            failures.append(f"leaderboard: {boards}")
 
     # Nothing outside the scratch folder: the real /autograder is untouched.
     if snapshot(REAL) != real_before:

@@ -27,6 +27,13 @@ inline doctest::description grading(int points, const char* hint, Visibility vis
   return doctest::description(gradingText(points, hint, visibility));
 }
 
+// An ungraded number for the course's leaderboard (Gradescope's
+// results.json "leaderboard"), measured by the judge itself, never reported
+// by the candidate: tools/grade collects it, a course publishes or ignores it.
+void recordLeaderboard(const std::string& name, double value, bool lowerIsBetter);
+// One line into PATHLAB_VERDICT_FILE (nothing when it is not set).
+void appendVerdictLine(const std::string& line);
+
 // The test case running now, and 0, 1, 2, ... on successive calls within it:
 // the key of data a suite stores per check (reference_noise.h).
 const char* currentTestCaseName();

@@ -5,7 +5,8 @@
 //
 // With PATHLAB_VERDICT_FILE set (tools/grade does), each test case's
 // verdict is also appended to that file: "PASS|FAIL <points> <name>", then
-// "END" when the run finished. The grader reads only this file, which the
+// "END" when the run finished; and any leaderboard entry a test records,
+// "LEADERBOARD asc|desc <value> <name>". The grader reads only this file, which the
 // candidate cannot reach, never the judge's stdout.
 #include <cstdio>
 #include <cstdlib>
@@ -25,6 +26,22 @@ const char* gradingText(int points, const char* hint, Visibility visibility) {
   std::lock_guard<std::mutex> lock(mutex);
   texts.push_back("points=" + std::to_string(points) + "; visibility=" + names[int(visibility)] + "; hint=" + hint);
   return texts.back().c_str();
+}
+
+void appendVerdictLine(const std::string& line) {
+  static const char* path = std::getenv("PATHLAB_VERDICT_FILE");
+  if (!path || !*path) return;
+  if (std::FILE* f = std::fopen(path, "a")) {
+    std::fprintf(f, "%s\n", line.c_str());
+    std::fclose(f);
+  }
+}
+
+void recordLeaderboard(const std::string& name, double value, bool lowerIsBetter) {
+  char number[64];
+  std::snprintf(number, sizeof number, "%.6g", value);
+  std::printf("leaderboard: %s = %s (%s is better; ungraded)\n", name.c_str(), number, lowerIsBetter ? "lower" : "higher");
+  appendVerdictLine(std::string("LEADERBOARD ") + (lowerIsBetter ? "asc " : "desc ") + number + " " + name);
 }
 
 namespace {
@@ -101,14 +118,7 @@ struct GradingListener : doctest::IReporter {
     }
   }
 
-  static void verdict(const std::string& line) {
-    static const char* path = std::getenv("PATHLAB_VERDICT_FILE");
-    if (!path || !*path) return;
-    if (std::FILE* f = std::fopen(path, "a")) {
-      std::fprintf(f, "%s\n", line.c_str());
-      std::fclose(f);
-    }
-  }
+  static void verdict(const std::string& line) { appendVerdictLine(line); }
   void test_case_exception(const doctest::TestCaseException&) override {}
   void subcase_start(const doctest::SubcaseSignature&) override {}
   void subcase_end() override {}
