@@ -316,7 +316,7 @@ int runBvhBench(const BvhBenchOptions& options) {
   // The tree alone, walked by the framework on the primary rays: the score a student can act on (and
   // the grader's leaderboard measure), whatever their traversal does.
   const TreeCost cost = treeCost(bvh, geometry, sets[0].rays);
-  std::printf("score of %s tree on the primary rays: %s\n", label == "reference" ? "the reference's" : label == "yours" ? "your" : "task 3's",
+  std::printf("score of %s tree on the primary rays (lower is better): %s\n", label == "reference" ? "the reference's" : label == "yours" ? "your" : "task 3's",
               formatTreeCost(cost).c_str());
   std::printf("fast path layout: +%.1f ms to gather the leaves and collapse (%s + layout", buildWide * 1e3,
               label.c_str());

@@ -162,9 +162,8 @@ std::vector<Ray> raysThroughBox(const Aabb& box, int side) {
 
 std::string formatTreeCost(const TreeCost& cost) {
   char text[200];
-  std::snprintf(text, sizeof text,
-                "%.1f nodes and %.2f primitive tests per ray: score %.1f (nodes + 10 x tests; lower is better)",
-                cost.nodesPerRay, cost.primitiveTestsPerRay, cost.score());
+  std::snprintf(text, sizeof text, "%.1f = %.1f nodes + 10 x %.2f primitive tests per ray", cost.score(),
+                cost.nodesPerRay, cost.primitiveTestsPerRay);
   return text;
 }
 

@@ -76,7 +76,8 @@ DebugOutput heatmapView(const DebugViewRequest& request) {
   // The tree alone, walked by the framework (what the grader's leaderboard ranks).
   std::string score;
   if (accelerator.usesBvh()) {
-    score = "your tree, walked by the framework: " + formatTreeCost(treeCost(accelerator.bvh(), accelerator.geometry(), rays)) + "\n";
+    score = "your tree's score, walked by the framework (lower is better):\n  " +
+            formatTreeCost(treeCost(accelerator.bvh(), accelerator.geometry(), rays)) + "\n";
   }
   return {image, buildReport(accelerator) + report + score};
 }

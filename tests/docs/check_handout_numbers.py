@@ -66,7 +66,7 @@ else:
     if legend:
         near("task 3 box tests per ray (legend)", float(legend.group(1)), float(stats.group(1)), 0.1)
     score = quoted("tasks/03-bvh/README.md", r"10 × triangle tests per ray, lower is better — about ([\d.]+) for the scan")
-    measured_score = re.search(r"walked by the framework: .*?score ([\d.]+)", out)
+    measured_score = re.search(r"walked by the framework.*?\n\s*([\d.]+) = ", out)
     if score and measured_score:
         near("task 3 tree score (nodes + 10 x tests)", float(score.group(1)), float(measured_score.group(1)), 0.1)
     elif score:
