@@ -100,6 +100,21 @@ def student_text(path: Path):
     return {"html": embed_images(body, path.parent), "written": bool(answer_lines), "missing": None}
 
 
+IMAGE_KINDS = {".png": "image/png", ".jpg": "image/jpeg", ".jpeg": "image/jpeg", ".gif": "image/gif",
+               ".svg": "image/svg+xml", ".webp": "image/webp"}
+
+
+def data_uri(path: Path) -> str:
+    """The picture inside the page; ValueError for a file a page cannot show or a PNG cut short."""
+    kind = IMAGE_KINDS.get(path.suffix.lower())
+    if kind is None:
+        raise ValueError(f"{path.name}: not an image a page can show (.png, .jpg, .gif, .svg, .webp)")
+    data = path.read_bytes()
+    if kind == "image/png" and not data.endswith(b"IEND\xaeB`\x82"):  # cut short: a program died while writing it
+        raise ValueError(f"{path.name}: an incomplete PNG")
+    return f"data:{kind};base64," + base64.b64encode(data).decode()
+
+
 def embed_images(body: str, folder: Path) -> str:
     """The student's own pictures (![what](file.png), next to the .md) go inside the page; a missing one is said."""
     def replace(match):
@@ -111,12 +126,12 @@ def embed_images(body: str, folder: Path) -> str:
         if name.startswith("data:"):
             return tag
         file = (folder / name).resolve()
-        kinds = {".png": "image/png", ".jpg": "image/jpeg", ".jpeg": "image/jpeg", ".gif": "image/gif",
-                 ".svg": "image/svg+xml", ".webp": "image/webp"}
-        if not file.is_file() or file.suffix.lower() not in kinds:
-            why = "not found" if not file.is_file() else "not a .png, .jpg, .gif, .svg or .webp"
-            return f'<span class="notice missing">image {e(name)}: {why} (next to the .md file)</span>'
-        uri = f"data:{kinds[file.suffix.lower()]};base64," + base64.b64encode(file.read_bytes()).decode()
+        try:
+            if not file.is_file():
+                raise ValueError("not found")
+            uri = data_uri(file)
+        except ValueError as why:
+            return f'<span class="notice missing">image {e(name)}: {e(str(why))} (next to the .md file)</span>'
         return f'<img src="{uri}" alt="{alt_text}" style="max-width: 100%">'
     return re.sub(r"<img\b[^>]*>", replace, body)
 
