@@ -277,8 +277,8 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel, std::atomic<b
   app.add_option("--integrator", render.integrator, "path (default), direct (task 4 only), preview (eye light, tasks 1-3), normals");
   app.add_option("--accel", render.accel,
                  "How rays walk task 3's tree: task3 (your intersectClosest/intersectAny) or fast (the framework's "
-                 "8-wide SIMD copy, the reference task 2's triangle test; same hits); default fast where tasks 2 and 3 "
-                 "are the reference");
+                 "8-wide SIMD copy, the reference task 2's triangle and sphere tests and hit records; same hits); "
+                 "default fast where tasks 2 and 3 are the reference");
   app.add_option("--sampler", render.sampler,
                  "Random numbers: sobol (default: Owen-scrambled Sobol points per pixel, less error for the same "
                  "samples), stratified (one jittered sample per cell, per dimension) or independent (plain Monte "

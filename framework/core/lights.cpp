@@ -15,12 +15,13 @@ AreaLight AreaLight::fromMesh(const Scene& scene, uint32_t mesh) {
   light.radiance_ = scene.materials[m.material].emission;
   std::vector<float> areas;
   for (const glm::uvec3& t : m.triangles) {
-    const Vec3 cross = glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]);
+    const Point3 &p0 = m.positions[t.x], &p1 = m.positions[t.y], &p2 = m.positions[t.z];
+    const Vec3 cross = glm::cross(p1 - p0, p2 - p0);
     areas.push_back(0.5f * glm::length(cross));
-    light.normals_.push_back(glm::normalize(cross));
+    light.triangles_.push_back({p0, p1, p2, glm::normalize(cross)});
   }
-  light.triangles_ = Distribution1D(areas);
-  light.area_ = float(light.triangles_.total());
+  light.byArea_ = Distribution1D(areas);
+  light.area_ = float(light.byArea_.total());
   return light;
 }
 
@@ -45,16 +46,19 @@ AreaSample AreaLight::sample(Vec2 u) const {
     result.point = s.center + s.radius * result.normal;
     return result;
   }
-  // Pick a triangle by area, then a uniform point in it (u.x is re-used).
-  float ux = 0.0f;
-  const size_t i = triangles_.sample(u.x, &ux);
-  const TriangleMesh& m = scene_->meshes[object_];
-  const glm::uvec3& t = m.triangles[i];
-  const Point3 &p0 = m.positions[t.x], &p1 = m.positions[t.y], &p2 = m.positions[t.z];
-  const float root = std::sqrt(ux);
-  const float b1 = root * (1.0f - u.y), b2 = root * u.y;
-  result.point = (1.0f - b1 - b2) * p0 + b1 * p1 + b2 * p2;
-  result.normal = normals_[i];
+  // Pick a triangle by area (u.x is re-used), then a uniform point in it:
+  // Heitz's map from the square to the triangle ("A Low-Distortion Map
+  // Between Triangle and Square", 2019), which folds the square's two halves
+  // onto it with a constant Jacobian. No square root, and neighbouring
+  // samples stay neighbours, so stratified and Sobol points stay spread.
+  // Heitz writes it with a branch (halve the smaller coordinate, subtract
+  // that from the other); subtracting half the smaller from both is the
+  // same, exactly, and leaves the CPU no coin-flip branch to mispredict.
+  Vec2 b(0.0f, u.y);
+  const Triangle& t = triangles_[byArea_.sample(u.x, &b.x)];
+  b -= 0.5f * std::min(b.x, b.y);
+  result.point = b.x * t.p0 + b.y * t.p1 + (1.0f - b.x - b.y) * t.p2;
+  result.normal = t.normal;
   return result;
 }
 

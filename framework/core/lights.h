@@ -39,8 +39,14 @@ class AreaLight {
   bool isSphere_ = false;
   Color radiance_{0.0f};
   float area_ = 0.0f;
-  Distribution1D triangles_;  // by area
-  std::vector<Vec3> normals_;  // each triangle's unit normal, made once rather than per sample
+  // Each triangle's corners and unit normal, copied at load so a sample reads
+  // one record instead of the mesh's index and position arrays.
+  struct Triangle {
+    Point3 p0, p1, p2;
+    Vec3 normal;
+  };
+  Distribution1D byArea_;  // which triangle
+  std::vector<Triangle> triangles_;
 };
 
 enum class EnvironmentSampling { Importance, Uniform };

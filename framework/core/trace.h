@@ -56,10 +56,20 @@ struct TraceContext {
   TraceContext(const Scene& s, const RayQueries& q, const Lights& l, const BsdfLobes& b)
       : scene(s), queries(q), lights(l), lobes(b), settings(s.render) {}
 
-  // Closest hit within range.
-  std::optional<Hit> intersect(const Ray& ray, Interval range);
+  // Closest hit within range. (Inline: called for every ray.)
+  std::optional<Hit> intersect(const Ray& ray, Interval range) {
+    ++rays;
+    std::optional<Hit> hit = queries.closestHit(ray, range);
+    if (log) [[unlikely]] log->push_back({ray, range, false, hit.has_value(), hit.value_or(Hit{})});
+    return hit;
+  }
   // Whether anything lies on the ray within range.
-  bool occluded(const Ray& ray, Interval range);
+  bool occluded(const Ray& ray, Interval range) {
+    ++rays;
+    const bool blocked = queries.anyHit(ray, range);
+    if (log) [[unlikely]] log->push_back({ray, range, true, blocked, Hit{}});
+    return blocked;
+  }
   // Radiance arriving along a ray that leaves the scene.
   Color background(const Vec3& direction) const;
   // The BSDF at `hit` seen from direction wo (unit, pointing away from the surface).

@@ -240,6 +240,18 @@ Accelerator::Accelerator(const Scene& scene, Traversal traversal) : scene_(scene
   geometry_ = LeafGeometry(scene, bvh_.primitives, kLinkedTasks.primitives);
   if (traversal_ == Traversal::Fast) {
     wide_ = WideBvh(bvh_, geometry_, kLinkedTasks.primitives);
+    surfaces_.reserve(scene.primitives.size());
+    for (const PrimitiveRef& ref : scene.primitives) {
+      if (ref.isSphere()) {
+        surfaces_.push_back({Vec3(0.0f), scene.spheres[ref.index].material, kSphere});
+        continue;
+      }
+      const TriangleMesh& mesh = scene.meshes[ref.mesh];
+      const glm::uvec3& v = mesh.triangles[ref.index];
+      const Point3 &p0 = mesh.positions[v.x], &p1 = mesh.positions[v.y], &p2 = mesh.positions[v.z];
+      surfaces_.push_back({glm::normalize(glm::cross(p1 - p0, p2 - p0)), mesh.material,
+                           mesh.normals.empty() ? kFlat : kSmooth});
+    }
     buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   usesBvh_ = true;
@@ -251,7 +263,38 @@ std::optional<Hit> Accelerator::intersect(const Ray& ray, Interval range, Traver
                                          ? wide_.intersectClosest(ray, range)
                                          : intersectClosest(bvh_, geometry_, ray, range, stats);
   if (!hit || hit->primitive >= scene_.primitives.size()) return std::nullopt;
-  return surfaceHit(scene_, ray, *hit);
+  return surfaces_.empty() ? surfaceHit(scene_, ray, *hit) : fastSurfaceHit(ray, *hit);
+}
+
+// surfaceHit with the reference's triangleSurfacePoint and sphereSurfacePoint
+// written out, in their order of operations: bit-identical records.
+Hit Accelerator::fastSurfaceHit(const Ray& ray, const PrimitiveHit& hit) const {
+  const SurfaceData& data = surfaces_[hit.primitive];
+  const PrimitiveRef& ref = scene_.primitives[hit.primitive];
+  Hit result;
+  result.t = hit.t;
+  result.primitive = hit.primitive;
+  result.material = data.material;
+  if (data.kind == kSphere) {
+    const Sphere& sphere = scene_.spheres[ref.index];
+    const Vec3 outward = glm::normalize(ray.at(hit.t) - sphere.center);
+    result.point = sphere.center + sphere.radius * outward;
+    result.geometricNormal = result.shadingNormal = outward;
+    return result;
+  }
+  const TriangleMesh& mesh = scene_.meshes[ref.mesh];
+  const glm::uvec3& v = mesh.triangles[ref.index];
+  const float b0 = 1.0f - hit.b1 - hit.b2;
+  result.point = b0 * mesh.positions[v.x] + hit.b1 * mesh.positions[v.y] + hit.b2 * mesh.positions[v.z];
+  result.geometricNormal = result.shadingNormal = data.normal;
+  if (data.kind == kSmooth) {
+    const Vec3 n = b0 * mesh.normals[v.x] + hit.b1 * mesh.normals[v.y] + hit.b2 * mesh.normals[v.z];
+    if (glm::dot(n, n) > 0.0f) {
+      result.shadingNormal = glm::normalize(n);
+      if (glm::dot(result.geometricNormal, result.shadingNormal) < 0.0f) result.geometricNormal = -data.normal;
+    }
+  }
+  return result;
 }
 
 bool Accelerator::occluded(const Ray& ray, Interval range, TraversalStats* stats) const {

@@ -91,7 +91,19 @@ class Accelerator final : public RayQueries {
   double buildSeconds() const { return buildSeconds_; }
 
  private:
+  // Traversal::Fast: the hit record from data made once per primitive (a flat
+  // triangle's unit normal, its material) with the reference task 2's
+  // arithmetic, so the same records as surfaceHit at less cost per hit.
+  struct SurfaceData {
+    Vec3 normal;        // flat triangles: normalize(cross(p1 - p0, p2 - p0))
+    uint32_t material;  // index into Scene::materials
+    uint32_t kind;      // kFlat, kSmooth (vertex normals) or kSphere
+  };
+  enum : uint32_t { kFlat, kSmooth, kSphere };
+  Hit fastSurfaceHit(const Ray& ray, const PrimitiveHit& hit) const;
+
   const Scene& scene_;
+  std::vector<SurfaceData> surfaces_;  // Traversal::Fast only
   Bvh bvh_;
   LeafGeometry geometry_;
   WideBvh wide_;  // Traversal::Fast only

@@ -5,6 +5,8 @@
 // max(NaN-prone value, running limit) keeps the limit.
 #pragma once
 
+#include <cmath>
+
 #if defined(__SSE2__) || defined(_M_X64)  // every x86-64 compiler: GCC, Clang, MSVC
 #include <emmintrin.h>
 #endif
@@ -30,6 +32,13 @@ inline int operator<=(F4 a, F4 b) { return _mm_movemask_ps(_mm_cmple_ps(a.v, b.v
 inline int operator>(F4 a, F4 b) { return _mm_movemask_ps(_mm_cmpgt_ps(a.v, b.v)); }
 inline int operator>=(F4 a, F4 b) { return _mm_movemask_ps(_mm_cmpge_ps(a.v, b.v)); }
 inline int operator==(F4 a, F4 b) { return _mm_movemask_ps(_mm_cmpeq_ps(a.v, b.v)); }
+inline F4 operator-(F4 a) { return {_mm_xor_ps(a.v, _mm_set1_ps(-0.0f))}; }  // the sign flipped, as unary minus
+inline F4 sqrt(F4 a) { return {_mm_sqrt_ps(a.v)}; }
+// a's magnitude with b's sign bit, as std::copysign.
+inline F4 copysign(F4 a, F4 b) {
+  const __m128 sign = _mm_set1_ps(-0.0f);
+  return {_mm_or_ps(_mm_andnot_ps(sign, a.v), _mm_and_ps(sign, b.v))};
+}
 
 #else
 
@@ -61,6 +70,9 @@ inline int operator<=(F4 a, F4 b) { return maskOf(a, b, [](float x, float y) { r
 inline int operator>(F4 a, F4 b) { return maskOf(a, b, [](float x, float y) { return x > y; }); }
 inline int operator>=(F4 a, F4 b) { return maskOf(a, b, [](float x, float y) { return x >= y; }); }
 inline int operator==(F4 a, F4 b) { return maskOf(a, b, [](float x, float y) { return x == y; }); }
+inline F4 operator-(F4 a) { return {{-a.v[0], -a.v[1], -a.v[2], -a.v[3]}}; }
+inline F4 sqrt(F4 a) { return {{std::sqrt(a.v[0]), std::sqrt(a.v[1]), std::sqrt(a.v[2]), std::sqrt(a.v[3])}}; }
+inline F4 copysign(F4 a, F4 b) { return each(a, b, [](float x, float y) { return std::copysign(x, y); }); }
 
 #endif
 

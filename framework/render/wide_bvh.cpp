@@ -4,6 +4,7 @@
 
 #include <array>
 #include <bit>
+#include <utility>
 
 #include "core/leaf_geometry.h"
 #include "render/lanes.h"
@@ -56,14 +57,17 @@ struct RayLanes {
       nearBound[axis] = inverse[axis] < 0.0f ? axis + 3 : axis;
       farBound[axis] = inverse[axis] < 0.0f ? axis : axis + 3;
     }
-    const Vec3 a = glm::abs(ray.direction);
-    kz = (a.x > a.y) ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+    // The reference's largestAxis, (a.x > a.y) ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2),
+    // in arithmetic: a ray's axis order is a coin flip the CPU cannot predict.
+    const Vec3 a(std::abs(ray.direction.x), std::abs(ray.direction.y), std::abs(ray.direction.z));
+    const int xOverY = a.x > a.y, xOverZ = a.x > a.z, yOverZ = a.y > a.z;
+    kz = xOverY * (2 - 2 * xOverZ) + (1 - xOverY) * (2 - yOverZ);
     kx = (kz + 1) % 3;
     ky = (kx + 1) % 3;
     const Vec3& d = ray.direction;
     shearX = lanes::splat(-d[kx] / d[kz]);
     shearY = lanes::splat(-d[ky] / d[kz]);
-    shearZ = lanes::splat(1.0f / d[kz]);
+    shearZ = lanes::splat(inverse[kz]);  // 1 / d[kz], already made
   }
 };
 
@@ -167,6 +171,44 @@ PATHLAB_ALWAYS_INLINE inline void testPacket(const WideBvh::TrianglePacket& p, c
   }
 }
 
+// The four lanes of a sphere packet through the reference's sphere test, in
+// its order of operations (bit-identical t). Returns the lanes hit inside
+// `range`, their t in `t`.
+PATHLAB_ALWAYS_INLINE inline int testSpheres(const WideBvh::SpherePacket& p, const Ray& ray, const RayLanes& r,
+                                             Interval range, float* t) {
+  const Vec3& d = ray.direction;
+  const float a = glm::dot(d, d);
+  const F4 da = lanes::splat(a), dx = lanes::splat(d.x), dy = lanes::splat(d.y), dz = lanes::splat(d.z);
+  const F4 fx = r.origin[0] - lanes::load(p.center[0]), fy = r.origin[1] - lanes::load(p.center[1]),
+           fz = r.origin[2] - lanes::load(p.center[2]);
+  const F4 radius = lanes::load(p.radius), radiusSquared = radius * radius;
+  const F4 halfB = fx * dx + fy * dy + fz * dz;
+  const F4 c = fx * fx + fy * fy + fz * fz - radiusSquared;
+  const F4 k = halfB / da;
+  const F4 px = fx - k * dx, py = fy - k * dy, pz = fz - k * dz;
+  const F4 discriminant = da * (radiusSquared - (px * px + py * py + pz * pz));
+  int lanesHit = int(p.lanes) & ~(discriminant < lanes::splat(0.0f));
+  if (!lanesHit) return 0;
+  const F4 q = -(halfB + lanes::copysign(lanes::sqrt(discriminant), halfB));
+  alignas(16) float qs[4], near[4], far[4];
+  lanes::store(qs, q);
+  lanes::store(near, c / q);
+  lanes::store(far, q / da);
+  for (int mask = lanesHit; mask; mask &= mask - 1) {
+    const int lane = std::countr_zero(unsigned(mask));
+    float t0 = qs[lane] != 0.0f ? near[lane] : 0.0f, t1 = far[lane];
+    if (t0 > t1) std::swap(t0, t1);
+    if (range.contains(t0)) {
+      t[lane] = t0;
+    } else if (range.contains(t1)) {
+      t[lane] = t1;
+    } else {
+      lanesHit &= ~(1 << lane);
+    }
+  }
+  return lanesHit;
+}
+
 std::optional<PrimitiveHit> laneOnEdge(const PrimitiveTests& tests, const WideBvh::TrianglePacket& p, int lane,
                                        const Ray& ray, Interval range) {
   auto vertex = [&](int v) { return Point3(p.vertex[v][0][lane], p.vertex[v][1][lane], p.vertex[v][2][lane]); };
@@ -174,12 +216,13 @@ std::optional<PrimitiveHit> laneOnEdge(const PrimitiveTests& tests, const WideBv
 }
 
 // The hits in one leaf, each found within `range` as it stands at its turn:
-// each packet's nearest lane (the first on a tie, as a sequential test keeps
-// it), its lanes on an edge, then the spheres. `onHit` narrows the range
-// (closest hit) or returns true to stop (any hit); so does leafHits.
+// each triangle packet's nearest lane (the first on a tie, as a sequential
+// test keeps it), its lanes on an edge, then each sphere packet's nearest.
+// `onHit` narrows the range (closest hit) or returns true to stop (any hit);
+// so does leafHits.
 template <class OnHit>
 bool leafHits(const WideBvh::Leaf& leaf, const std::vector<WideBvh::TrianglePacket>& packets,
-              const std::vector<WideBvh::SphereSlot>& spheres, const PrimitiveTests& tests, const RayLanes& r,
+              const std::vector<WideBvh::SpherePacket>& spheres, const PrimitiveTests& tests, const RayLanes& r,
               const Ray& ray, Interval& range, OnHit&& onHit) {
   for (uint32_t k = 0; k < leaf.packetCount; ++k) {
     const WideBvh::TrianglePacket& packet = packets[leaf.firstPacket + k];
@@ -199,10 +242,17 @@ bool leafHits(const WideBvh::Leaf& leaf, const std::vector<WideBvh::TrianglePack
       if (hit && onHit(*hit)) return true;
     }
   }
-  for (uint32_t k = 0; k < leaf.sphereCount; ++k) {
-    const WideBvh::SphereSlot& s = spheres[leaf.firstSphere + k];
-    auto hit = sphereHit(tests, ray, range, s.center, s.radius, s.primitive);
-    if (hit && onHit(*hit)) return true;
+  for (uint32_t k = 0; k < leaf.spherePacketCount; ++k) {
+    const WideBvh::SpherePacket& packet = spheres[leaf.firstSpherePacket + k];
+    alignas(16) float t[4];
+    const int hit = testSpheres(packet, ray, r, range, t);
+    if (!hit) continue;
+    int nearest = std::countr_zero(unsigned(hit));
+    for (int mask = hit & (hit - 1); mask; mask &= mask - 1) {
+      const int lane = std::countr_zero(unsigned(mask));
+      if (t[lane] < t[nearest]) nearest = lane;
+    }
+    if (onHit(PrimitiveHit{t[nearest], 0.0f, 0.0f, packet.primitive[nearest]})) return true;
   }
   return false;
 }
@@ -293,12 +343,20 @@ void WideBvh::collapse(const Bvh& bvh, const LeafGeometry& geometry, const std::
 // order task 3's leaves list them (read from `geometry`, which holds them in
 // that order: one pass through memory, no lookups in the scene).
 uint32_t WideBvh::addLeaf(const Bvh& bvh, const LeafGeometry& geometry, uint32_t subtree) {
-  Leaf out{uint32_t(packets_.size()), 0, uint32_t(spheres_.size()), 0};
-  int lane = kPacketSize;
+  Leaf out{uint32_t(packets_.size()), 0, uint32_t(spherePackets_.size()), 0};
+  int lane = kPacketSize, sphereLane = kPacketSize;
   auto add = [&](const LeafGeometry::Slot& slot) {
     if (slot.isSphere) {
-      spheres_.push_back({slot.a, slot.b.x, slot.primitive});
-      ++out.sphereCount;
+      if (sphereLane == kPacketSize) {
+        spherePackets_.emplace_back();
+        ++out.spherePacketCount;
+        sphereLane = 0;
+      }
+      SpherePacket& packet = spherePackets_.back();
+      for (int axis = 0; axis < 3; ++axis) packet.center[axis][sphereLane] = slot.a[axis];
+      packet.radius[sphereLane] = slot.b.x;
+      packet.primitive[sphereLane] = slot.primitive;
+      packet.lanes |= 1u << sphereLane++;
       return;
     }
     if (lane == kPacketSize) {
@@ -401,7 +459,7 @@ std::optional<PrimitiveHit> WideBvh::Walk::closest(const WideBvh& bvh, const Ray
   while (true) {
     if (item & kLeaf) {
       const Leaf& leaf = bvh.leaves_[item & ~kLeaf];
-      leafHits(leaf, bvh.packets_, bvh.spheres_, bvh.tests_, r, ray, range, [&](const PrimitiveHit& hit) {
+      leafHits(leaf, bvh.packets_, bvh.spherePackets_, bvh.tests_, r, ray, range, [&](const PrimitiveHit& hit) {
         closest = hit;
         range.max = hit.t;  // from now on only closer hits count
         return false;
@@ -444,7 +502,7 @@ bool WideBvh::Walk::any(const WideBvh& bvh, const RayLanes& r, const Boxes& boxe
   uint32_t item = 0;
   while (true) {
     if (item & kLeaf) {
-      if (leafHits(bvh.leaves_[item & ~kLeaf], bvh.packets_, bvh.spheres_, bvh.tests_, r, ray, range,
+      if (leafHits(bvh.leaves_[item & ~kLeaf], bvh.packets_, bvh.spherePackets_, bvh.tests_, r, ray, range,
                    [](const PrimitiveHit&) { return true; })) {
         return true;
       }

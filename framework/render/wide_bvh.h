@@ -1,12 +1,13 @@
 // The framework's render path (--accel fast): task 3's binary tree collapsed
 // into an 8-wide tree whose eight child boxes are tested together (AVX2 where
 // the CPU has it, else four at a time), with the triangles of each leaf
-// stored four to a packet and tested together, as Embree lays out its own.
-// The packet test is the reference task 2's watertight test (pbrt-v4) done
-// lane by lane with the same arithmetic, so the hits are task 3's; spheres, and the rare ray exactly on a triangle's edge,
-// go to the linked task 2 through its table. Use it where task 2 is the
-// reference (defaultTraversal in accelerator.h decides); the tree must have
-// passed validateBvh.
+// stored four to a packet and tested together, as Embree lays out its own,
+// and its spheres likewise. The packet tests are the reference task 2's
+// watertight triangle test (pbrt-v4) and sphere test, done lane by lane with
+// the same arithmetic, so the hits are task 3's; the rare ray exactly on a
+// triangle's edge goes to the linked task 2 through its table. Use it where
+// task 2 is the reference (defaultTraversal in accelerator.h decides); the
+// tree must have passed validateBvh.
 #pragma once
 
 #include <cstddef>
@@ -27,7 +28,7 @@ class WideBvh {
   WideBvh() = default;
   // `geometry` holds `bvh`'s primitives in leaf order (LeafGeometry(scene,
   // bvh.primitives, ...)); `tests` are task 2's (kLinkedTasks.primitives),
-  // for spheres and edge cases.
+  // for rays on a triangle's edge.
   //
   // The box tests use AVX2 (eight boxes per instruction) where the CPU has
   // it, else the baseline: SSE2 (four at a time), or plain code off x86.
@@ -61,14 +62,17 @@ class WideBvh {
     uint32_t lanes = 0;      // bit l: lane l holds a triangle with non-zero area
     uint32_t unused[3] = {};
   };
-  struct SphereSlot {
-    Point3 center;
-    float radius;
-    uint32_t primitive;
+  // Up to four spheres, axis by axis.
+  struct alignas(16) SpherePacket {
+    float center[3][4];      // [axis][lane]
+    float radius[4];
+    uint32_t primitive[4];   // scene primitive of each lane
+    uint32_t lanes = 0;      // bit l: lane l holds a sphere
+    uint32_t unused[3] = {};
   };
-  // A leaf of task 3's tree: its triangles as packets, its spheres one by one.
+  // A leaf of task 3's tree: its triangles as packets, then its spheres.
   struct Leaf {
-    uint32_t firstPacket, packetCount, firstSphere, sphereCount;
+    uint32_t firstPacket, packetCount, firstSpherePacket, spherePacketCount;
   };
   static constexpr uint32_t kLeaf = 1u << 31;
   static constexpr int kPacketSize = 4;
@@ -81,7 +85,7 @@ class WideBvh {
 
   std::vector<Node> nodes_;
   std::vector<TrianglePacket> packets_;
-  std::vector<SphereSlot> spheres_;
+  std::vector<SpherePacket> spherePackets_;
   std::vector<Leaf> leaves_;
   PrimitiveTests tests_;
   bool avx2_ = false;
