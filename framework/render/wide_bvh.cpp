@@ -197,7 +197,7 @@ PATHLAB_ALWAYS_INLINE inline int testSpheres(const WideBvh::SpherePacket& p, con
   for (int mask = lanesHit; mask; mask &= mask - 1) {
     const int lane = std::countr_zero(unsigned(mask));
     float t0 = qs[lane] != 0.0f ? near[lane] : 0.0f, t1 = far[lane];
-    if (t0 > t1) std::swap(t0, t1);
+    if (t0 > t1) std::swap(t0, t1);  // (only when t1 < 0: a no-op for ranges from 0 on, kept as the reference has it)
     if (range.contains(t0)) {
       t[lane] = t0;
     } else if (range.contains(t1)) {

@@ -44,6 +44,7 @@ class WideBvh {
   bool usesAvx2() const { return avx2_; }
   size_t nodeCount() const { return nodes_.size(); }
   size_t packetCount() const { return packets_.size(); }
+  size_t spherePacketCount() const { return spherePackets_.size(); }
   // Share of packet lanes that hold a triangle (empty lanes cost as much).
   double laneOccupancy() const;
 

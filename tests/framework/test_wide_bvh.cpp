@@ -61,7 +61,7 @@ Scene sceneOf(std::vector<TriangleMesh> meshes, std::vector<Sphere> spheres = {}
 
 // The scenes: tens of thousands of small triangles; spheres among
 // triangles; a grid crossed on its edges, with zero-area and duplicate
-// triangles; a tree that is a single leaf; one triangle.
+// triangles; a cloud of spheres; a tree that is a single leaf; one triangle.
 std::vector<std::pair<std::string, Scene>> scenes() {
   std::vector<std::pair<std::string, Scene>> out;
   out.emplace_back("scan-like mesh", scanLikeScene());
@@ -74,6 +74,17 @@ std::vector<std::pair<std::string, Scene>> scenes() {
                    sceneOf({edges, test::icosphere(2, Point3(6.0f, 6.0f, 2.0f), 1.5f)},
                            {Sphere{Point3(3.0f, 9.0f, 1.0f), 0.75f}, Sphere{Point3(9.0f, 3.0f, -1.0f), 0.5f}}));
   out.emplace_back("one leaf", sceneOf({grid(1)}, {Sphere{Point3(0.5f, 0.5f, 2.0f), 0.25f}}));
+  // A cloud of 300 overlapping spheres (leaves of several, so packets of
+  // two to four), some nested in one another, one duplicated (a tie).
+  std::vector<Sphere> cloud;
+  Sampler place(3, 0, 5);
+  for (int i = 0; i < 300; ++i) {
+    const Vec2 u = place.next2D(), v = place.next2D();
+    cloud.push_back({Point3(10.0f * u.x, 10.0f * u.y, 10.0f * v.x), 0.05f + 0.6f * v.y, 0});
+    if (i % 25 == 0) cloud.push_back({cloud.back().center, 0.5f * cloud.back().radius, 0});  // nested
+  }
+  cloud.push_back(cloud[7]);
+  out.emplace_back("cloud of spheres", sceneOf({}, cloud));
   TriangleMesh one;
   one.positions = {Point3(0, 0, 0), Point3(1, 0, 0), Point3(0, 1, 0)};
   one.triangles = {{0, 1, 2}};
@@ -164,6 +175,17 @@ TEST_CASE("wide BVH: the same closest hit as task 3, to the last bit, and the sa
       CHECK(hits > rays.size() / 10);  // the rays do reach the geometry
       CHECK(blocked == hits);          // (with the same ranges, a closest hit exists iff something blocks)
     }
+  }
+}
+
+TEST_CASE("wide BVH: a leaf's spheres share packets (the cloud's leaves fill several lanes)") {
+  for (auto& [name, scene] : scenes()) {
+    if (name != "cloud of spheres") continue;
+    const Bvh bvh = buildBvh(primitiveBounds(scene));
+    const WideBvh wide(bvh, LeafGeometry(scene, bvh.primitives, kLinkedTasks.primitives), kLinkedTasks.primitives);
+    CHECK(wide.packetCount() == 0);
+    CHECK(wide.spherePacketCount() >= scene.spheres.size() / 4);
+    CHECK(wide.spherePacketCount() < scene.spheres.size() * 3 / 4);  // many packets hold two or more
   }
 }
 
