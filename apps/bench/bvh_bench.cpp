@@ -350,8 +350,8 @@ int runBvhBench(const BvhBenchOptions& options) {
                           {"embree_mrays_threads", r.embreeN ? Json(*r.embreeN) : Json(nullptr)}};
   }
   // The framework's render path walks task 3's tree; its hits must be task 3's, exactly.
-  std::printf("fast path (--accel fast: the same tree %d-wide, %s, four triangles per SIMD test)\n",
-              WideBvh::kWidth, wide.usesAvx2() ? "eight boxes per AVX2 test" : "four boxes per SSE2 test");
+  std::printf("fast path (--accel fast: the same tree %d-wide, %s)\n", WideBvh::kWidth,
+              wide.usesAvx2() ? "eight boxes or triangles per AVX2 test" : "four boxes or triangles per SSE2 test");
   for (size_t s = 0; s < sets.size(); ++s) {
     const SetResult& r = results[s];
     std::optional<double> ratio1, ratioN;

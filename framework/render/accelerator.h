@@ -60,8 +60,8 @@ std::string formatTreeCost(const TreeCost& cost);
 
 // How rendering walks task 3's tree: Task3 calls the linked task-3 code
 // (intersectClosest, intersectAny); Fast collapses the same tree into the
-// framework's 8-wide layout (wide_bvh.h) and tests eight boxes (AVX2; four
-// per instruction without it) and four triangles at a time, with the
+// framework's 8-wide layout (wide_bvh.h) and tests eight boxes and eight
+// triangles at a time (AVX2; four per instruction without it), with the
 // reference task 2's arithmetic: the same hits.
 // Fast is the default where tasks 2 and 3 are both the reference's; a
 // student's render runs their own code.

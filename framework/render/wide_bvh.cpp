@@ -71,6 +71,52 @@ struct RayLanes {
   }
 };
 
+// A packet's lanes through the reference's watertight test, in its order of
+// operations (so each lane's t, b1, b2 are bit-identical to it): `hit` gets
+// the lanes hit inside `range`, `onEdge` the lanes with an edge function of
+// exactly 0, which the reference settles in double precision. Eight lanes at
+// once with AVX2 (Avx2Boxes::packet), else four and four (testHalfPacket).
+struct PacketHits {
+  alignas(32) float t[WideBvh::kPacketSize], b1[WideBvh::kPacketSize], b2[WideBvh::kPacketSize];
+  int hit = 0, onEdge = 0;
+};
+
+PATHLAB_ALWAYS_INLINE inline void testHalfPacket(const WideBvh::TrianglePacket& p, int half, const RayLanes& r,
+                                                 Interval range, PacketHits& out) {
+  const F4 zero = lanes::splat(0.0f);
+  F4 x[3], y[3], z[3];  // the vertices relative to the origin, permuted and sheared
+  for (int v = 0; v < 3; ++v) {
+    x[v] = lanes::load(p.vertex[v][r.kx] + half) - r.origin[r.kx];
+    y[v] = lanes::load(p.vertex[v][r.ky] + half) - r.origin[r.ky];
+    z[v] = lanes::load(p.vertex[v][r.kz] + half) - r.origin[r.kz];
+    x[v] = x[v] + r.shearX * z[v];
+    y[v] = y[v] + r.shearY * z[v];
+  }
+  const F4 e0 = x[1] * y[2] - y[1] * x[2];
+  const F4 e1 = x[2] * y[0] - y[2] * x[0];
+  const F4 e2 = x[0] * y[1] - y[0] * x[1];
+  const int onEdge = (e0 == zero) | (e1 == zero) | (e2 == zero);
+  const int mixedSigns = ((e0 < zero) | (e1 < zero) | (e2 < zero)) & ((e0 > zero) | (e1 > zero) | (e2 > zero));
+  const F4 det = e0 + e1 + e2;
+  const F4 tScaled = e0 * (z[0] * r.shearZ) + e1 * (z[1] * r.shearZ) + e2 * (z[2] * r.shearZ);
+  const F4 minDet = lanes::splat(range.min) * det, maxDet = lanes::splat(range.max) * det;
+  const int outside = ((det < zero) & ((tScaled >= minDet) | (tScaled <= maxDet))) |
+                      ((det > zero) & ((tScaled <= minDet) | (tScaled >= maxDet)));
+  const int lanesIn = int(p.lanes >> half) & 15;
+  int hit = lanesIn & ~onEdge & ~mixedSigns & ~(det == zero) & ~outside;
+  out.onEdge |= (lanesIn & onEdge) << half;
+  if (!hit) return;
+  const F4 inverseDet = lanes::splat(1.0f) / det;
+  lanes::store(out.t + half, tScaled * inverseDet);
+  lanes::store(out.b1 + half, e1 * inverseDet);
+  lanes::store(out.b2 + half, e2 * inverseDet);
+  for (int mask = hit; mask; mask &= mask - 1) {  // as triangleHit: never an answer outside the range
+    const int lane = std::countr_zero(unsigned(mask));
+    if (!range.contains(out.t[half + lane])) hit &= ~(1 << lane);
+  }
+  out.hit |= hit << half;
+}
+
 // The box tests of one node: the entry t of each child box within
 // [tMin, tMax] into `entry`, and the mask of children hit. A ray lying in a
 // slab plane gives 0 * inf = NaN, which min/max pass over (lanes.h): that
@@ -95,6 +141,10 @@ struct BaselineBoxes {
       mask |= (near <= far) << half;
     }
     return mask & ((1 << node.count) - 1);
+  }
+  void packet(const WideBvh::TrianglePacket& p, Interval range, PacketHits& out) const {
+    testHalfPacket(p, 0, r, range, out);
+    if (p.lanes >> 4) testHalfPacket(p, 4, r, range, out);
   }
 };
 
@@ -124,52 +174,54 @@ struct Avx2Boxes {
     _mm256_store_ps(entry, near);
     return _mm256_movemask_ps(_mm256_cmp_ps(near, far, _CMP_LE_OQ)) & ((1 << node.count) - 1);
   }
+  // testHalfPacket's arithmetic on all eight lanes at once.
+  [[gnu::target("avx2")]] void packet(const WideBvh::TrianglePacket& p, Interval range, PacketHits& out) const {
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 shearX = _mm256_set1_ps(lanes::first(r.shearX)), shearY = _mm256_set1_ps(lanes::first(r.shearY)),
+                 shearZ = _mm256_set1_ps(lanes::first(r.shearZ));
+    __m256 x[3], y[3], z[3];
+    for (int v = 0; v < 3; ++v) {
+      x[v] = _mm256_sub_ps(_mm256_load_ps(p.vertex[v][r.kx]), origin[r.kx]);
+      y[v] = _mm256_sub_ps(_mm256_load_ps(p.vertex[v][r.ky]), origin[r.ky]);
+      z[v] = _mm256_sub_ps(_mm256_load_ps(p.vertex[v][r.kz]), origin[r.kz]);
+      x[v] = _mm256_add_ps(x[v], _mm256_mul_ps(shearX, z[v]));
+      y[v] = _mm256_add_ps(y[v], _mm256_mul_ps(shearY, z[v]));
+    }
+    const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(x[1], y[2]), _mm256_mul_ps(y[1], x[2]));
+    const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0]));
+    const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(x[0], y[1]), _mm256_mul_ps(y[0], x[1]));
+    const __m256 onEdge = _mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(e0, zero, _CMP_EQ_OQ), _mm256_cmp_ps(e1, zero, _CMP_EQ_OQ)),
+                                       _mm256_cmp_ps(e2, zero, _CMP_EQ_OQ));
+    const __m256 negative = _mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(e0, zero, _CMP_LT_OQ), _mm256_cmp_ps(e1, zero, _CMP_LT_OQ)),
+                                         _mm256_cmp_ps(e2, zero, _CMP_LT_OQ));
+    const __m256 positive = _mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(e0, zero, _CMP_GT_OQ), _mm256_cmp_ps(e1, zero, _CMP_GT_OQ)),
+                                         _mm256_cmp_ps(e2, zero, _CMP_GT_OQ));
+    const __m256 det = _mm256_add_ps(_mm256_add_ps(e0, e1), e2);
+    const __m256 tScaled = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(e0, _mm256_mul_ps(z[0], shearZ)),
+                                                       _mm256_mul_ps(e1, _mm256_mul_ps(z[1], shearZ))),
+                                         _mm256_mul_ps(e2, _mm256_mul_ps(z[2], shearZ)));
+    const __m256 minDet = _mm256_mul_ps(_mm256_set1_ps(range.min), det);
+    const __m256 maxDet = _mm256_mul_ps(_mm256_set1_ps(range.max), det);
+    const __m256 outside = _mm256_or_ps(
+        _mm256_and_ps(_mm256_cmp_ps(det, zero, _CMP_LT_OQ), _mm256_or_ps(_mm256_cmp_ps(tScaled, minDet, _CMP_GE_OQ), _mm256_cmp_ps(tScaled, maxDet, _CMP_LE_OQ))),
+        _mm256_and_ps(_mm256_cmp_ps(det, zero, _CMP_GT_OQ), _mm256_or_ps(_mm256_cmp_ps(tScaled, minDet, _CMP_LE_OQ), _mm256_cmp_ps(tScaled, maxDet, _CMP_GE_OQ))));
+    const __m256 rejected = _mm256_or_ps(_mm256_or_ps(onEdge, _mm256_and_ps(negative, positive)),
+                                         _mm256_or_ps(_mm256_cmp_ps(det, zero, _CMP_EQ_OQ), outside));
+    const int lanesIn = int(p.lanes);
+    out.onEdge = lanesIn & _mm256_movemask_ps(onEdge);
+    out.hit = lanesIn & ~_mm256_movemask_ps(rejected);
+    if (!out.hit) return;
+    const __m256 inverseDet = _mm256_div_ps(_mm256_set1_ps(1.0f), det);
+    _mm256_store_ps(out.t, _mm256_mul_ps(tScaled, inverseDet));
+    _mm256_store_ps(out.b1, _mm256_mul_ps(e1, inverseDet));
+    _mm256_store_ps(out.b2, _mm256_mul_ps(e2, inverseDet));
+    for (int mask = out.hit; mask; mask &= mask - 1) {  // as triangleHit: never an answer outside the range
+      const int lane = std::countr_zero(unsigned(mask));
+      if (!range.contains(out.t[lane])) out.hit &= ~(1 << lane);
+    }
+  }
 };
 #endif
-
-// The four lanes of a packet through the reference's watertight test, in its
-// order of operations (so each lane's t, b1, b2 are bit-identical to it).
-// Returns the lanes hit inside `range`; `onEdge` gets the lanes with an edge
-// function of exactly 0, which the reference settles in double precision.
-struct PacketHits {
-  alignas(16) float t[4], b1[4], b2[4];
-  int hit = 0, onEdge = 0;
-};
-
-PATHLAB_ALWAYS_INLINE inline void testPacket(const WideBvh::TrianglePacket& p, const RayLanes& r, Interval range,
-                                             PacketHits& out) {
-  const F4 zero = lanes::splat(0.0f);
-  F4 x[3], y[3], z[3];  // the vertices relative to the origin, permuted and sheared
-  for (int v = 0; v < 3; ++v) {
-    x[v] = lanes::load(p.vertex[v][r.kx]) - r.origin[r.kx];
-    y[v] = lanes::load(p.vertex[v][r.ky]) - r.origin[r.ky];
-    z[v] = lanes::load(p.vertex[v][r.kz]) - r.origin[r.kz];
-    x[v] = x[v] + r.shearX * z[v];
-    y[v] = y[v] + r.shearY * z[v];
-  }
-  const F4 e0 = x[1] * y[2] - y[1] * x[2];
-  const F4 e1 = x[2] * y[0] - y[2] * x[0];
-  const F4 e2 = x[0] * y[1] - y[0] * x[1];
-  const int onEdge = (e0 == zero) | (e1 == zero) | (e2 == zero);
-  const int mixedSigns = ((e0 < zero) | (e1 < zero) | (e2 < zero)) & ((e0 > zero) | (e1 > zero) | (e2 > zero));
-  const F4 det = e0 + e1 + e2;
-  const F4 tScaled = e0 * (z[0] * r.shearZ) + e1 * (z[1] * r.shearZ) + e2 * (z[2] * r.shearZ);
-  const F4 minDet = lanes::splat(range.min) * det, maxDet = lanes::splat(range.max) * det;
-  const int outside = ((det < zero) & ((tScaled >= minDet) | (tScaled <= maxDet))) |
-                      ((det > zero) & ((tScaled <= minDet) | (tScaled >= maxDet)));
-  const int lanesIn = int(p.lanes);
-  out.onEdge = lanesIn & onEdge;
-  out.hit = lanesIn & ~onEdge & ~mixedSigns & ~(det == zero) & ~outside;
-  if (!out.hit) return;
-  const F4 inverseDet = lanes::splat(1.0f) / det;
-  lanes::store(out.t, tScaled * inverseDet);
-  lanes::store(out.b1, e1 * inverseDet);
-  lanes::store(out.b2, e2 * inverseDet);
-  for (int mask = out.hit; mask; mask &= mask - 1) {  // as triangleHit: never an answer outside the range
-    const int lane = std::countr_zero(unsigned(mask));
-    if (!range.contains(out.t[lane])) out.hit &= ~(1 << lane);
-  }
-}
 
 // The four lanes of a sphere packet through the reference's sphere test, in
 // its order of operations (bit-identical t). Returns the lanes hit inside
@@ -220,14 +272,14 @@ std::optional<PrimitiveHit> laneOnEdge(const PrimitiveTests& tests, const WideBv
 // test keeps it), its lanes on an edge, then each sphere packet's nearest.
 // `onHit` narrows the range (closest hit) or returns true to stop (any hit);
 // so does leafHits.
-template <class OnHit>
+template <class Lanes, class OnHit>
 bool leafHits(const WideBvh::Leaf& leaf, const std::vector<WideBvh::TrianglePacket>& packets,
-              const std::vector<WideBvh::SpherePacket>& spheres, const PrimitiveTests& tests, const RayLanes& r,
-              const Ray& ray, Interval& range, OnHit&& onHit) {
+              const std::vector<WideBvh::SpherePacket>& spheres, const PrimitiveTests& tests, const Lanes& lanes,
+              const RayLanes& r, const Ray& ray, Interval& range, OnHit&& onHit) {
   for (uint32_t k = 0; k < leaf.packetCount; ++k) {
     const WideBvh::TrianglePacket& packet = packets[leaf.firstPacket + k];
     PacketHits hits;
-    testPacket(packet, r, range, hits);
+    lanes.packet(packet, range, hits);
     int nearest = -1;
     for (int mask = hits.hit; mask; mask &= mask - 1) {
       const int lane = std::countr_zero(unsigned(mask));
@@ -294,8 +346,8 @@ WideBvh::WideBvh(const Bvh& bvh, const LeafGeometry& geometry, const PrimitiveTe
 // Wide node `wide` takes the place of binary interior node `binary`: start
 // from its two children and open the largest interior child until there
 // are kWidth (the surface area says which box rays reach most often). A
-// subtree of at most four primitives becomes one leaf, so its triangles fill
-// one packet instead of several half-empty ones.
+// subtree of at most kPacketSize (8) primitives becomes one leaf, so its
+// triangles fill one packet, tested at once, instead of several.
 void WideBvh::collapse(const Bvh& bvh, const LeafGeometry& geometry, const std::vector<uint32_t>& below,
                        uint32_t wide, uint32_t binary) {
   auto opens = [&](uint32_t n) { return !bvh.nodes[n].isLeaf() && below[n] > kPacketSize; };
@@ -344,10 +396,10 @@ void WideBvh::collapse(const Bvh& bvh, const LeafGeometry& geometry, const std::
 // that order: one pass through memory, no lookups in the scene).
 uint32_t WideBvh::addLeaf(const Bvh& bvh, const LeafGeometry& geometry, uint32_t subtree) {
   Leaf out{uint32_t(packets_.size()), 0, uint32_t(spherePackets_.size()), 0};
-  int lane = kPacketSize, sphereLane = kPacketSize;
+  int lane = kPacketSize, sphereLane = kSpherePacketSize;
   auto add = [&](const LeafGeometry::Slot& slot) {
     if (slot.isSphere) {
-      if (sphereLane == kPacketSize) {
+      if (sphereLane == kSpherePacketSize) {
         spherePackets_.emplace_back();
         ++out.spherePacketCount;
         sphereLane = 0;
@@ -459,7 +511,7 @@ std::optional<PrimitiveHit> WideBvh::Walk::closest(const WideBvh& bvh, const Ray
   while (true) {
     if (item & kLeaf) {
       const Leaf& leaf = bvh.leaves_[item & ~kLeaf];
-      leafHits(leaf, bvh.packets_, bvh.spherePackets_, bvh.tests_, r, ray, range, [&](const PrimitiveHit& hit) {
+      leafHits(leaf, bvh.packets_, bvh.spherePackets_, bvh.tests_, boxes, r, ray, range, [&](const PrimitiveHit& hit) {
         closest = hit;
         range.max = hit.t;  // from now on only closer hits count
         return false;
@@ -502,7 +554,7 @@ bool WideBvh::Walk::any(const WideBvh& bvh, const RayLanes& r, const Boxes& boxe
   uint32_t item = 0;
   while (true) {
     if (item & kLeaf) {
-      if (leafHits(bvh.leaves_[item & ~kLeaf], bvh.packets_, bvh.spherePackets_, bvh.tests_, r, ray, range,
+      if (leafHits(bvh.leaves_[item & ~kLeaf], bvh.packets_, bvh.spherePackets_, bvh.tests_, boxes, r, ray, range,
                    [](const PrimitiveHit&) { return true; })) {
         return true;
       }

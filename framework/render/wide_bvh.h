@@ -1,8 +1,8 @@
 // The framework's render path (--accel fast): task 3's binary tree collapsed
 // into an 8-wide tree whose eight child boxes are tested together (AVX2 where
-// the CPU has it, else four at a time), with the triangles of each leaf
-// stored four to a packet and tested together, as Embree lays out its own,
-// and its spheres likewise. The packet tests are the reference task 2's
+// the CPU has it, else four at a time), with the triangles of each leaf (at
+// most eight) stored in one packet and tested together, as Embree lays out
+// its own, and its spheres four to a packet. The packet tests are the reference task 2's
 // watertight triangle test (pbrt-v4) and sphere test, done lane by lane with
 // the same arithmetic, so the hits are task 3's; the rare ray exactly on a
 // triangle's edge goes to the linked task 2 through its table. Use it where
@@ -30,8 +30,8 @@ class WideBvh {
   // bvh.primitives, ...)); `tests` are task 2's (kLinkedTasks.primitives),
   // for rays on a triangle's edge.
   //
-  // The box tests use AVX2 (eight boxes per instruction) where the CPU has
-  // it, else the baseline: SSE2 (four at a time), or plain code off x86.
+  // The box and triangle tests use AVX2 (eight per instruction) where the
+  // CPU has it, else the baseline: SSE2 (four at a time), or plain code off x86.
   // Both give the same hits; Baseline forces the second (for tests).
   enum class Instructions { Best, Baseline };
   WideBvh(const Bvh& bvh, const LeafGeometry& geometry, const PrimitiveTests& tests,
@@ -56,12 +56,14 @@ class WideBvh {
     uint32_t child[kWidth];    // a node index, or kLeaf | index into leaves_
     uint32_t count = 0;        // children in use, lanes [0, count)
   };
-  // Up to four triangles, vertex by vertex and axis by axis.
-  struct alignas(16) TrianglePacket {
-    float vertex[3][3][4];   // [vertex][axis][lane]
-    uint32_t primitive[4];   // scene primitive of each lane
-    uint32_t lanes = 0;      // bit l: lane l holds a triangle with non-zero area
-    uint32_t unused[3] = {};
+  // Up to eight triangles, vertex by vertex and axis by axis (tested eight
+  // at a time with AVX2, else four and four).
+  static constexpr int kPacketSize = 8;
+  struct alignas(32) TrianglePacket {
+    float vertex[3][3][kPacketSize];  // [vertex][axis][lane]
+    uint32_t primitive[kPacketSize];  // scene primitive of each lane
+    uint32_t lanes = 0;               // bit l: lane l holds a triangle with non-zero area
+    uint32_t unused[7] = {};
   };
   // Up to four spheres, axis by axis.
   struct alignas(16) SpherePacket {
@@ -76,7 +78,7 @@ class WideBvh {
     uint32_t firstPacket, packetCount, firstSpherePacket, spherePacketCount;
   };
   static constexpr uint32_t kLeaf = 1u << 31;
-  static constexpr int kPacketSize = 4;
+  static constexpr int kSpherePacketSize = 4;
 
  private:
   struct Walk;  // the traversals (wide_bvh.cpp)

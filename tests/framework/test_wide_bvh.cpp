@@ -189,7 +189,7 @@ TEST_CASE("wide BVH: a leaf's spheres share packets (the cloud's leaves fill sev
   }
 }
 
-TEST_CASE("wide BVH: an empty tree hits nothing; the layout packs four triangles per packet") {
+TEST_CASE("wide BVH: an empty tree hits nothing; the layout packs up to eight triangles per packet") {
   const WideBvh empty;
   CHECK_FALSE(empty.intersectClosest(Ray{Point3(0.0f), Vec3(0, 0, 1)}, {}));
   CHECK_FALSE(empty.intersectAny(Ray{Point3(0.0f), Vec3(0, 0, 1)}, {}));
@@ -197,7 +197,7 @@ TEST_CASE("wide BVH: an empty tree hits nothing; the layout packs four triangles
   const Bvh bvh = buildBvh(primitiveBounds(scene));
   const WideBvh wide(bvh, LeafGeometry(scene, bvh.primitives, kLinkedTasks.primitives), kLinkedTasks.primitives);
   CHECK(wide.nodeCount() < bvh.nodes.size() / 2);
-  CHECK(wide.packetCount() >= scene.triangleCount() / 4);
+  CHECK(wide.packetCount() >= scene.triangleCount() / WideBvh::kPacketSize);
   CHECK(wide.laneOccupancy() > 0.6);
 }
 
