@@ -104,8 +104,8 @@ DebugOutput heatmapView(const DebugViewRequest& request) {
     const Accelerator fast(request.scene, Traversal::Fast);
     char speed[200];
     std::snprintf(speed, sizeof speed,
-                  "speed on these rays, 1 thread: your intersectClosest %.2f Mrays/s, "
-                  "the render path's 8-wide walk of your tree %.2f Mrays/s\n",
+                  "speed on these rays, 1 thread:\n  your intersectClosest %.2f Mrays/s\n"
+                  "  the render path's 8-wide walk of your tree %.2f Mrays/s\n",
                   closestHitsPerMicrosecond(accelerator, rays), closestHitsPerMicrosecond(fast, rays));
     score += speed;
   }
