@@ -149,7 +149,15 @@ struct BaselineBoxes {
 };
 
 #if PATHLAB_WIDE_BVH_AVX2
-static_assert(WideBvh::kWidth == 8);
+static_assert(WideBvh::kWidth == 8 && WideBvh::kPacketSize == 8);
+// Lane masks: a comparison (ordered: false where either side is NaN, as the
+// scalar operators), and the lanes set in any of three masks.
+template <int kPredicate>
+[[gnu::target("avx2")]] inline __m256 compare(__m256 a, __m256 b) {
+  return _mm256_cmp_ps(a, b, kPredicate);
+}
+[[gnu::target("avx2")]] inline __m256 any(__m256 a, __m256 b, __m256 c) { return _mm256_or_ps(_mm256_or_ps(a, b), c); }
+
 struct Avx2Boxes {
   const RayLanes& r;
   __m256 origin[3], inverseDirection[3], widenedInverse[3];
@@ -190,12 +198,12 @@ struct Avx2Boxes {
     const __m256 e0 = _mm256_sub_ps(_mm256_mul_ps(x[1], y[2]), _mm256_mul_ps(y[1], x[2]));
     const __m256 e1 = _mm256_sub_ps(_mm256_mul_ps(x[2], y[0]), _mm256_mul_ps(y[2], x[0]));
     const __m256 e2 = _mm256_sub_ps(_mm256_mul_ps(x[0], y[1]), _mm256_mul_ps(y[0], x[1]));
-    const __m256 onEdge = _mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(e0, zero, _CMP_EQ_OQ), _mm256_cmp_ps(e1, zero, _CMP_EQ_OQ)),
-                                       _mm256_cmp_ps(e2, zero, _CMP_EQ_OQ));
-    const __m256 negative = _mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(e0, zero, _CMP_LT_OQ), _mm256_cmp_ps(e1, zero, _CMP_LT_OQ)),
-                                         _mm256_cmp_ps(e2, zero, _CMP_LT_OQ));
-    const __m256 positive = _mm256_or_ps(_mm256_or_ps(_mm256_cmp_ps(e0, zero, _CMP_GT_OQ), _mm256_cmp_ps(e1, zero, _CMP_GT_OQ)),
-                                         _mm256_cmp_ps(e2, zero, _CMP_GT_OQ));
+    const __m256 onEdge =
+        any(compare<_CMP_EQ_OQ>(e0, zero), compare<_CMP_EQ_OQ>(e1, zero), compare<_CMP_EQ_OQ>(e2, zero));
+    const __m256 negative =
+        any(compare<_CMP_LT_OQ>(e0, zero), compare<_CMP_LT_OQ>(e1, zero), compare<_CMP_LT_OQ>(e2, zero));
+    const __m256 positive =
+        any(compare<_CMP_GT_OQ>(e0, zero), compare<_CMP_GT_OQ>(e1, zero), compare<_CMP_GT_OQ>(e2, zero));
     const __m256 det = _mm256_add_ps(_mm256_add_ps(e0, e1), e2);
     const __m256 tScaled = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(e0, _mm256_mul_ps(z[0], shearZ)),
                                                        _mm256_mul_ps(e1, _mm256_mul_ps(z[1], shearZ))),
@@ -203,10 +211,12 @@ struct Avx2Boxes {
     const __m256 minDet = _mm256_mul_ps(_mm256_set1_ps(range.min), det);
     const __m256 maxDet = _mm256_mul_ps(_mm256_set1_ps(range.max), det);
     const __m256 outside = _mm256_or_ps(
-        _mm256_and_ps(_mm256_cmp_ps(det, zero, _CMP_LT_OQ), _mm256_or_ps(_mm256_cmp_ps(tScaled, minDet, _CMP_GE_OQ), _mm256_cmp_ps(tScaled, maxDet, _CMP_LE_OQ))),
-        _mm256_and_ps(_mm256_cmp_ps(det, zero, _CMP_GT_OQ), _mm256_or_ps(_mm256_cmp_ps(tScaled, minDet, _CMP_LE_OQ), _mm256_cmp_ps(tScaled, maxDet, _CMP_GE_OQ))));
-    const __m256 rejected = _mm256_or_ps(_mm256_or_ps(onEdge, _mm256_and_ps(negative, positive)),
-                                         _mm256_or_ps(_mm256_cmp_ps(det, zero, _CMP_EQ_OQ), outside));
+        _mm256_and_ps(compare<_CMP_LT_OQ>(det, zero),
+                      _mm256_or_ps(compare<_CMP_GE_OQ>(tScaled, minDet), compare<_CMP_LE_OQ>(tScaled, maxDet))),
+        _mm256_and_ps(compare<_CMP_GT_OQ>(det, zero),
+                      _mm256_or_ps(compare<_CMP_LE_OQ>(tScaled, minDet), compare<_CMP_GE_OQ>(tScaled, maxDet))));
+    const __m256 rejected =
+        any(onEdge, _mm256_and_ps(negative, positive), _mm256_or_ps(compare<_CMP_EQ_OQ>(det, zero), outside));
     const int lanesIn = int(p.lanes);
     out.onEdge = lanesIn & _mm256_movemask_ps(onEdge);
     out.hit = lanesIn & ~_mm256_movemask_ps(rejected);
