@@ -1,9 +1,9 @@
 """Smoke test of tools/compare-speed (CTest compare-speed). No timing is
 asserted: speed is reported, never tested. Two paired runs of the same
 binary on a tiny render: every run line, both summaries and the speed-up
-are printed and parse as positive numbers; a binary that fails is named in
-one clear error with a non-zero exit, and a malformed command line prints
-the usage (exit 2).
+are printed and parse as positive numbers; a binary that fails or does not
+exist is named in one clear error with a non-zero exit, and a malformed
+command line prints the usage (exit 2).
 
 usage: check_compare_speed.py PATHLAB"""
 import re
@@ -37,6 +37,9 @@ def main() -> int:
     broken = run("--runs", "1", pathlab, "/bin/false", "--", "-r", "8", "8", "-s", "1")
     if broken.returncode == 0 or "/bin/false failed" not in broken.stderr:
         failures.append(f"a failing binary: exit {broken.returncode}, stderr {broken.stderr.strip()!r}")
+    missing = run("--runs", "1", pathlab, "/nonexistent/pathlab", "--", "-r", "8", "8", "-s", "1")
+    if missing.returncode == 0 or "cannot run /nonexistent/pathlab" not in missing.stderr:
+        failures.append(f"a missing binary: exit {missing.returncode}, stderr {missing.stderr.strip()!r}")
     usage = run(pathlab, pathlab)
     if usage.returncode != 2 or "usage: tools/compare-speed" not in usage.stderr:
         failures.append(f"no '--': exit {usage.returncode}, stderr {usage.stderr.strip()!r}")
