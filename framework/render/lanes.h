@@ -34,7 +34,6 @@ inline int operator>=(F4 a, F4 b) { return _mm_movemask_ps(_mm_cmpge_ps(a.v, b.v
 inline int operator==(F4 a, F4 b) { return _mm_movemask_ps(_mm_cmpeq_ps(a.v, b.v)); }
 inline F4 operator-(F4 a) { return {_mm_xor_ps(a.v, _mm_set1_ps(-0.0f))}; }  // the sign flipped, as unary minus
 inline F4 sqrt(F4 a) { return {_mm_sqrt_ps(a.v)}; }
-inline float first(F4 a) { return _mm_cvtss_f32(a.v); }  // lane 0
 // a's magnitude with b's sign bit, as std::copysign.
 inline F4 copysign(F4 a, F4 b) {
   const __m128 sign = _mm_set1_ps(-0.0f);
@@ -73,7 +72,6 @@ inline int operator>=(F4 a, F4 b) { return maskOf(a, b, [](float x, float y) { r
 inline int operator==(F4 a, F4 b) { return maskOf(a, b, [](float x, float y) { return x == y; }); }
 inline F4 operator-(F4 a) { return {{-a.v[0], -a.v[1], -a.v[2], -a.v[3]}}; }
 inline F4 sqrt(F4 a) { return {{std::sqrt(a.v[0]), std::sqrt(a.v[1]), std::sqrt(a.v[2]), std::sqrt(a.v[3])}}; }
-inline float first(F4 a) { return a.v[0]; }
 inline F4 copysign(F4 a, F4 b) { return each(a, b, [](float x, float y) { return std::copysign(x, y); }); }
 
 #endif

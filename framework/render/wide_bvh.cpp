@@ -161,6 +161,7 @@ template <int kPredicate>
 struct Avx2Boxes {
   const RayLanes& r;
   __m256 origin[3], inverseDirection[3], widenedInverse[3];
+  __m256 shearX, shearY, shearZ;  // the triangle test's, eight lanes wide
 
   [[gnu::target("avx2")]] explicit Avx2Boxes(const RayLanes& lanes) : r(lanes) {
     for (int axis = 0; axis < 3; ++axis) {
@@ -168,6 +169,9 @@ struct Avx2Boxes {
       inverseDirection[axis] = _mm256_set_m128(r.inverseDirection[axis].v, r.inverseDirection[axis].v);
       widenedInverse[axis] = _mm256_set_m128(r.widenedInverse[axis].v, r.widenedInverse[axis].v);
     }
+    shearX = _mm256_set_m128(r.shearX.v, r.shearX.v);
+    shearY = _mm256_set_m128(r.shearY.v, r.shearY.v);
+    shearZ = _mm256_set_m128(r.shearZ.v, r.shearZ.v);
   }
   [[gnu::target("avx2")]] int operator()(const WideBvh::Node& node, float tMin, float tMax, float* entry) const {
     __m256 near = _mm256_set1_ps(tMin), far = _mm256_set1_ps(tMax);
@@ -185,8 +189,6 @@ struct Avx2Boxes {
   // testHalfPacket's arithmetic on all eight lanes at once.
   [[gnu::target("avx2")]] void packet(const WideBvh::TrianglePacket& p, Interval range, PacketHits& out) const {
     const __m256 zero = _mm256_setzero_ps();
-    const __m256 shearX = _mm256_set1_ps(lanes::first(r.shearX)), shearY = _mm256_set1_ps(lanes::first(r.shearY)),
-                 shearZ = _mm256_set1_ps(lanes::first(r.shearZ));
     __m256 x[3], y[3], z[3];
     for (int v = 0; v < 3; ++v) {
       x[v] = _mm256_sub_ps(_mm256_load_ps(p.vertex[v][r.kx]), origin[r.kx]);
