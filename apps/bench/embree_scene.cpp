@@ -16,22 +16,57 @@ struct EmbreeScene::Handles {
 };
 
 EmbreeScene::EmbreeScene(const TriangleMesh& mesh, int buildThreads) : handles_(std::make_unique<Handles>()) {
+  Scene scene;
+  scene.meshes.push_back(mesh);
+  build(scene, buildThreads);
+}
+
+EmbreeScene::EmbreeScene(const Scene& scene, int buildThreads) : handles_(std::make_unique<Handles>()) {
+  build(scene, buildThreads);
+}
+
+void EmbreeScene::build(const Scene& scene, int buildThreads) {
   const std::string config = "threads=" + std::to_string(buildThreads);
   handles_->device = rtcNewDevice(config.c_str());
   if (!handles_->device) throw Error("Embree: cannot create a device");
   const auto start = std::chrono::steady_clock::now();
   handles_->scene = rtcNewScene(handles_->device);
-  RTCGeometry geometry = rtcNewGeometry(handles_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  // rtcSetNewGeometryBuffer pads the allocation as Embree's SIMD loads need.
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                3 * sizeof(float), mesh.positions.size()));
-  std::memcpy(vertices, mesh.positions.data(), mesh.positions.size() * 3 * sizeof(float));
-  auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                 3 * sizeof(uint32_t), mesh.triangles.size()));
-  std::memcpy(indices, mesh.triangles.data(), mesh.triangles.size() * 3 * sizeof(uint32_t));
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometry(handles_->scene, geometry);
-  rtcReleaseGeometry(geometry);
+  // Geometry IDs in attach order: the meshes, then the spheres, as the
+  // scene numbers its primitives (all triangles, then all spheres).
+  uint32_t primitive = 0;
+  for (const TriangleMesh& mesh : scene.meshes) {
+    if (mesh.triangles.empty()) continue;
+    RTCGeometry geometry = rtcNewGeometry(handles_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // rtcSetNewGeometryBuffer pads the allocation as Embree's SIMD loads need.
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                                  RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                                  mesh.positions.size()));
+    std::memcpy(vertices, mesh.positions.data(), mesh.positions.size() * 3 * sizeof(float));
+    auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
+                                                                   RTC_FORMAT_UINT3, 3 * sizeof(uint32_t),
+                                                                   mesh.triangles.size()));
+    std::memcpy(indices, mesh.triangles.data(), mesh.triangles.size() * 3 * sizeof(uint32_t));
+    rtcCommitGeometry(geometry);
+    firstPrimitive_.push_back(primitive);
+    rtcAttachGeometryByID(handles_->scene, geometry, uint32_t(firstPrimitive_.size() - 1));
+    rtcReleaseGeometry(geometry);
+    primitive += uint32_t(mesh.triangles.size());
+  }
+  if (!scene.spheres.empty()) {
+    RTCGeometry geometry = rtcNewGeometry(handles_->device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+    auto* points = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                                                                4 * sizeof(float), scene.spheres.size()));
+    for (size_t i = 0; i < scene.spheres.size(); ++i) {
+      const Sphere& sphere = scene.spheres[i];
+      points[4 * i] = sphere.center.x, points[4 * i + 1] = sphere.center.y, points[4 * i + 2] = sphere.center.z;
+      points[4 * i + 3] = sphere.radius;
+    }
+    rtcCommitGeometry(geometry);
+    sphereGeometry_ = uint32_t(firstPrimitive_.size());
+    firstPrimitive_.push_back(primitive);
+    rtcAttachGeometryByID(handles_->scene, geometry, sphereGeometry_);
+    rtcReleaseGeometry(geometry);
+  }
   rtcCommitScene(handles_->scene);
   buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -53,7 +88,9 @@ std::optional<PrimitiveHit> EmbreeScene::intersect(const Ray& ray, Interval rang
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(handles_->scene, &context, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-  return PrimitiveHit{rh.ray.tfar, rh.hit.u, rh.hit.v, rh.hit.primID};
+  const uint32_t primitive = firstPrimitive_[rh.hit.geomID] + rh.hit.primID;
+  if (rh.hit.geomID == sphereGeometry_) return PrimitiveHit{rh.ray.tfar, 0.0f, 0.0f, primitive};
+  return PrimitiveHit{rh.ray.tfar, rh.hit.u, rh.hit.v, primitive};
 }
 
 bool EmbreeScene::occluded(const Ray& ray, Interval range) const {

@@ -173,6 +173,13 @@ with tempfile.TemporaryDirectory(prefix="pathlab-bench-render-") as tmp:
             check(0.0 < share < 1.0, f"render: ray-query share {share} is not a fraction")
             check(re.search(r"^ray queries .*: \d+ % of the time", out.stdout, re.M) is not None,
                   "render: no line with the ray-query share")
+            # With Embree built in, the same rays through it: a share, and the same answers (a wrong
+            # primitive numbering, or spheres left out, would disagree on most rays of this scene).
+            if result.get("embree_query_share") is not None:
+                check(0.0 < result["embree_query_share"] < 1.0 and result.get("embree_agreement", 0) > 0.99,
+                      f"render: Embree's share {result['embree_query_share']} or agreement "
+                      f"{result.get('embree_agreement')} is off")
+                check("through Intel Embree" in out.stdout, "render: no line with Embree's share")
     missing = os.path.join(tmp, "no-such-scene.json")
     out = run(["render", "--scene", missing, "--spp", "1"], 60)
     check(out.returncode != 0 and "no-such-scene.json" in out.stderr and "Traceback" not in out.stderr,
