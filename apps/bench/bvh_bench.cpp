@@ -19,7 +19,9 @@
 #include "scene/scene_io.h"
 #include "tasks/bvh.h"
 #include "util/error.h"
+#include "util/input_file.h"
 #include "util/parallel.h"
+#include "util/platform.h"
 #include "util/random.h"
 #ifdef PATHLAB_HAVE_EMBREE
 #include "embree_scene.h"
@@ -164,6 +166,71 @@ std::vector<RaySet> makeRaySets(const Scene& scene, const Bvh& bvh, const LeafGe
   return {primary, shadow, diffuse};
 }
 
+// Task 3's own traversal on one set of rays: Mrays/s on one thread and on
+// `threads`, and its answers (hits, or blocked for shadow rays).
+struct Task3Run {
+  double mrays1 = 0.0, mraysN = 0.0;
+  std::vector<std::optional<PrimitiveHit>> hits;
+  std::vector<uint8_t> blocked;
+};
+
+Task3Run runTask3(const RaySet& set, const Bvh& bvh, const LeafGeometry& geometry, int threads) {
+  Task3Run run;
+  run.hits.resize(set.rays.size());
+  run.blocked.resize(set.rays.size());
+  auto withTask = [&](size_t i) {
+    if (set.occlusion) run.blocked[i] = intersectAny(bvh, geometry, set.rays[i], set.ranges[i]);
+    else run.hits[i] = intersectClosest(bvh, geometry, set.rays[i], set.ranges[i]);
+  };
+  run.mrays1 = mraysPerSecond(set.rays.size(), 1, withTask);
+  run.mraysN = mraysPerSecond(set.rays.size(), threads, withTask);
+  return run;
+}
+
+// The reference's task 3 on the same mesh and rays: the reference build
+// beside this program (pathlab-bench-reference, made where this build links
+// the student's task 3 and the reference is there) run with
+// --task3-speed-only. Its JSON, or nothing and `why`.
+std::optional<Json> referenceTask3Speed(const BvhBenchOptions& options, int threads, std::string& why) {
+  const std::string self = currentExecutablePath();
+#if defined(_WIN32)
+  const char* kReferenceBench = "pathlab-bench-reference.exe";
+#else
+  const char* kReferenceBench = "pathlab-bench-reference";
+#endif
+  const std::filesystem::path reference = std::filesystem::path(self).parent_path() / kReferenceBench;
+  if (self.empty() || !fileStatus(reference.string()).found) {
+    why = "no reference build beside this program (" + std::string(kReferenceBench) +
+          " is built where the reference is there: solutions/, or a student release's reference-objects/ "
+          "for this platform)";
+    return std::nullopt;
+  }
+  const std::filesystem::path out =
+      std::filesystem::temp_directory_path() / ("pathlab-bench-reference-" + std::to_string(currentProcessId()) + ".json");
+  std::vector<std::string> arguments;
+  if (options.triangles > 0) arguments = {"--triangles", std::to_string(options.triangles)};
+  else if (!options.mesh.empty()) arguments = {options.mesh};
+  arguments.insert(arguments.begin(), "bvh");
+  for (const std::string& a : {std::string("--threads"), std::to_string(threads), std::string("--task3-speed-only"),
+                               out.string()}) {
+    arguments.push_back(a);
+  }
+  std::string error;
+  const int code = runProgram(reference.string(), arguments, error);
+  const FileRead read = readRegularFile(out.string(), 1 << 20);
+  removeFileQuietly(out.string());
+  if (code != 0 || !read.opened) {
+    why = reference.string() + " failed (" + (code < 0 ? error : "exit code " + std::to_string(code)) + ")";
+    return std::nullopt;
+  }
+  Json json = Json::parse(read.bytes, nullptr, false);
+  if (json.is_discarded() || json.value("task3", "") != "reference") {
+    why = reference.string() + " did not report the reference's task 3";
+    return std::nullopt;
+  }
+  return json;
+}
+
 struct SetResult {
   double task1 = 0.0, taskN = 0.0;  // task 3's BVH (with task 2's triangle test in its leaves)
   std::optional<double> embree1, embreeN;
@@ -212,6 +279,17 @@ int runBvhBench(const BvhBenchOptions& options) {
   const double buildTask = medianBuildSeconds([&] { bvh = Bvh{}; }, [&] { bvh = buildBvh(bounds); });
   const std::string problem = validateBvh(bvh, scene.primitives.size(), &bounds);
   if (!problem.empty()) throw Error("the task-3 BVH (" + describeTasks(tasks, {3}) + ") is not valid: " + problem);
+  if (!options.task3SpeedOut.empty()) {
+    // Asked by a student build (referenceTask3Speed): task 3's speed alone, as JSON.
+    const LeafGeometry leaves(scene, bvh.primitives, kLinkedTasks.primitives);
+    Json json = {{"task3", codeName(tasks[3])}};
+    for (const RaySet& set : makeRaySets(scene, bvh, leaves)) {
+      const Task3Run run = runTask3(set, bvh, leaves, threads);
+      json[set.name] = {{"task3_mrays", run.mrays1}, {"task3_mrays_threads", run.mraysN}};
+    }
+    writeFileAtomically(options.task3SpeedOut, json.dump());
+    return 0;
+  }
   // The fast path's layout: the leaves' geometry gathered in leaf order, then
   // task 3's tree collapsed to eight children per node. (The task-3 walk reads
   // the same gathered geometry; its build time above leaves it out.)
@@ -245,14 +323,11 @@ int runBvhBench(const BvhBenchOptions& options) {
   for (size_t s = 0; s < sets.size(); ++s) {
     const RaySet& set = sets[s];
     SetResult& result = results[s];
-    std::vector<std::optional<PrimitiveHit>> hits(set.rays.size());
-    std::vector<uint8_t> blocked(set.rays.size());
-    auto withTask = [&](size_t i) {
-      if (set.occlusion) blocked[i] = intersectAny(bvh, geometry, set.rays[i], set.ranges[i]);
-      else hits[i] = intersectClosest(bvh, geometry, set.rays[i], set.ranges[i]);
-    };
-    result.task1 = mraysPerSecond(set.rays.size(), 1, withTask);
-    result.taskN = mraysPerSecond(set.rays.size(), threads, withTask);
+    Task3Run task3 = runTask3(set, bvh, geometry, threads);
+    const std::vector<std::optional<PrimitiveHit>>& hits = task3.hits;
+    const std::vector<uint8_t>& blocked = task3.blocked;
+    result.task1 = task3.mrays1;
+    result.taskN = task3.mraysN;
     std::vector<std::optional<PrimitiveHit>> fastHits(set.rays.size());
     std::vector<uint8_t> fastBlocked(set.rays.size());
     auto withFast = [&](size_t i) {
@@ -363,6 +438,27 @@ int runBvhBench(const BvhBenchOptions& options) {
     json[sets[s].name]["fast_mrays_threads"] = r.fastN;
     json[sets[s].name]["fast_ratio"] = ratio1 ? Json(*ratio1) : Json(nullptr);
     json[sets[s].name]["fast_mismatches_vs_task3"] = r.fastMismatches;
+  }
+  // The student's task 3 against the reference's, same mesh, same machine, one run.
+  if (tasks[3] == Code::Yours) {
+    std::string why;
+    if (const std::optional<Json> reference = referenceTask3Speed(options, threads, why)) {
+      std::printf("the reference's task 3 on the same mesh and view (%s):\n", "pathlab-bench-reference");
+      Json comparison;
+      for (size_t s = 0; s < sets.size(); ++s) {
+        const double ref1 = (*reference)[sets[s].name].value("task3_mrays", 0.0);
+        const double refN = (*reference)[sets[s].name].value("task3_mrays_threads", 0.0);
+        const SetResult& r = results[s];
+        std::printf("%-8s %8s %8s | %7.2f %7s %7.2f | %7.2f %7s %7.2f | yours / reference\n", sets[s].name, "",
+                    "Mrays/s", ref1, "", ref1 > 0.0 ? r.task1 / ref1 : 0.0, refN, "", refN > 0.0 ? r.taskN / refN : 0.0);
+        comparison[sets[s].name] = {{"reference_mrays", ref1}, {"reference_mrays_threads", refN},
+                                    {"ratio", ref1 > 0.0 ? Json(r.task1 / ref1) : Json(nullptr)}};
+      }
+      json["reference_task3"] = comparison;
+    } else {
+      std::printf("the reference's task 3: not measured: %s\n", why.c_str());
+      json["reference_task3"] = nullptr;
+    }
   }
   for (size_t s = 0; s < sets.size(); ++s) {
     if (results[s].embreeMisses == 0) continue;

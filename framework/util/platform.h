@@ -11,6 +11,7 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace pathlab {
 
@@ -65,6 +66,12 @@ long currentProcessId();
 // The running program's own file, as an absolute path ("" if the system will
 // not say): finds the files built beside it.
 std::string currentExecutablePath();
+
+// Runs the program at `path` with `arguments` and waits for it to end. No
+// shell: each argument reaches it whole, spaces and quotes included. Its
+// output goes where this process's goes. Returns its exit code, or -1 with
+// `error` set when it could not start or did not exit by itself (a signal).
+int runProgram(const std::string& path, const std::vector<std::string>& arguments, std::string& error);
 
 bool stderrIsTerminal();
 // Sends stderr to the null device until restoreStderr(token); a library's

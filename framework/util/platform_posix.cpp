@@ -9,7 +9,9 @@
 #if defined(__APPLE__)
 #include <mach-o/dyld.h>
 #endif
+#include <spawn.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -17,6 +19,8 @@
 #include <csignal>
 #include <cstring>
 #include <vector>
+
+extern char** environ;  // the process's environment, for the programs it starts (POSIX)
 
 namespace pathlab {
 namespace {
@@ -146,6 +150,28 @@ std::string currentExecutablePath() {
   const ssize_t n = ::readlink("/proc/self/exe", self, sizeof self - 1);
   return n > 0 ? std::string(self, size_t(n)) : std::string();
 #endif
+}
+
+int runProgram(const std::string& path, const std::vector<std::string>& arguments, std::string& error) {
+  std::vector<char*> argv{const_cast<char*>(path.c_str())};
+  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int started = ::posix_spawn(&pid, path.c_str(), nullptr, nullptr, argv.data(), environ);
+  if (started != 0) {
+    error = std::strerror(started);
+    return -1;
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) {
+      error = std::strerror(errno);
+      return -1;
+    }
+  }
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  error = "ended by signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + ")";
+  return -1;
 }
 
 bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) == 1; }

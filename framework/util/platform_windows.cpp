@@ -12,10 +12,13 @@
 
 #include <fcntl.h>
 #include <io.h>
+#include <process.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace pathlab {
 namespace {
@@ -183,6 +186,42 @@ std::string currentExecutablePath() {
   std::string utf8(size_t(bytes > 0 ? bytes : 0), '\0');
   if (bytes > 0) WideCharToMultiByte(CP_UTF8, 0, path.data(), int(path.size()), utf8.data(), bytes, nullptr, nullptr);
   return utf8;
+}
+
+namespace {
+// One argument as the C runtime's command-line parser reads it back
+// (CommandLineToArgvW's rules): quoted, a quote escaped with a backslash,
+// and the backslashes before a quote or the closing quote doubled.
+std::wstring quoteArgument(const std::wstring& argument) {
+  std::wstring quoted = L"\"";
+  size_t backslashes = 0;
+  for (const wchar_t c : argument) {
+    if (c == L'\\') {
+      ++backslashes;
+      continue;
+    }
+    quoted.append(c == L'"' ? 2 * backslashes + 1 : backslashes, L'\\');
+    backslashes = 0;
+    quoted.push_back(c);
+  }
+  quoted.append(2 * backslashes, L'\\');
+  return quoted + L"\"";
+}
+}  // namespace
+
+int runProgram(const std::string& path, const std::vector<std::string>& arguments, std::string& error) {
+  // _wspawnv joins its arguments with spaces as they are: each is quoted here.
+  std::vector<std::wstring> quoted{quoteArgument(widen(path))};
+  for (const std::string& argument : arguments) quoted.push_back(quoteArgument(widen(argument)));
+  std::vector<const wchar_t*> argv;
+  for (const std::wstring& argument : quoted) argv.push_back(argument.c_str());
+  argv.push_back(nullptr);
+  const intptr_t code = _wspawnv(_P_WAIT, widen(path).c_str(), argv.data());
+  if (code == -1) {
+    error = std::strerror(errno);
+    return -1;
+  }
+  return int(code);
 }
 
 bool stderrIsTerminal() { return _isatty(_fileno(stderr)) != 0; }

@@ -102,6 +102,31 @@ if "--skip-bvh" not in sys.argv:
             label = "yours" if who == "yours" else "ref"
             check(re.search(rf"^rays .*\|\s+{label}\s+Embree\s+ratio", out.stdout, re.M) is not None,
                   f"bvh: the table's columns are not labelled {label!r}")
+        # The student's task 3 against the reference's, run by the reference build beside this one.
+        beside = os.path.join(os.path.dirname(os.path.abspath(bench)), "pathlab-bench-reference")
+        if who == "yours" and os.path.exists(beside):
+            comparison = result.get("reference_task3") or {}
+            for name in ("primary", "shadow", "diffuse"):
+                check(comparison.get(name, {}).get("reference_mrays", 0) > 0,
+                      f"bvh {name}: no speed of the reference's task 3 from {beside}")
+            check("the reference's task 3 on the same mesh" in out.stdout, "bvh: no lines for the reference's task 3")
+        elif who == "yours":
+            check("reference_task3" in result and result["reference_task3"] is None and
+                  "the reference's task 3: not measured: no reference build" in out.stdout,
+                  "bvh: without a reference build beside it, the bench does not say so")
+        else:
+            check("reference_task3" not in result, "bvh: the reference compared with itself")
+
+    # What a student build asks of the reference build beside it: task 3's speed alone, as JSON, nothing printed.
+    with tempfile.TemporaryDirectory(prefix="pathlab-bench-speed-") as tmp:
+        speed_file = os.path.join(tmp, "speed of task 3.json")
+        out = run(["bvh", "--triangles", "2000", "--threads", "1", "--task3-speed-only", speed_file], 120)
+        if check(out.returncode == 0 and out.stdout == "" and os.path.exists(speed_file),
+                 f"bvh --task3-speed-only: exit {out.returncode}, printed {out.stdout[-200:]!r}"):
+            speed = json.load(open(speed_file))
+            check(speed.get("task3") in ("yours", "reference") and
+                  all(speed.get(n, {}).get("task3_mrays", 0) > 0 for n in ("primary", "shadow", "diffuse")),
+                  f"bvh --task3-speed-only: {speed}")
 
 # ---- converge ----------------------------------------------------------------
 strategies = ["reference", *TASK5_STRATEGIES, "env-uniform", "stratified"]

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "util/error.h"
 #include "util/input_file.h"
@@ -73,6 +74,21 @@ void run() {
   const std::string self = currentExecutablePath();
   expect(self.find("test-platform") != std::string::npos && fileStatus(self).kind == FileKind::Regular,
          "the program's own path (" + self + ")");
+  // runProgram: this program started again (main's --write-arguments), every
+  // argument arriving whole, its exit code coming back.
+  const std::vector<std::string> arguments{"two words", "a \"quoted\" word", "ends in a backslash\\", "\\\"", "",
+                                           "x\\y z"};
+  std::vector<std::string> request{"--write-arguments", "platform-arguments.txt"};
+  request.insert(request.end(), arguments.begin(), arguments.end());
+  std::string runError;
+  int code = runProgram(self, request, runError);
+  expect(code == 7 && runError.empty(), "a program run, its exit code " + std::to_string(code) + " " + runError);
+  std::string received;
+  for (const std::string& argument : arguments) received += argument + "\n";
+  expect(readInputFile("platform-arguments.txt", "text file", 1000) == received,
+         "its arguments arrive whole: spaces, quotes, backslashes, an empty one");
+  code = runProgram("no-such-program", {}, runError);
+  expect(code == -1 && !runError.empty(), "a program that is not there: " + std::to_string(code) + ", " + runError);
   e = errorOf([] { writeFileAtomically("no-such-folder/x.txt", "x"); });
   expect(contains(e, "no-such-folder/x.txt: cannot write: "), "a write into a missing folder: " + e);
 
@@ -91,7 +107,13 @@ void run() {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc >= 3 && std::string(argv[1]) == "--write-arguments") {  // started by runProgram's test
+    std::string text;
+    for (int i = 3; i < argc; ++i) text += std::string(argv[i]) + "\n";
+    writeFileAtomically(argv[2], text);
+    return 7;
+  }
   try {
     run();
   } catch (const std::exception& e) {
