@@ -156,6 +156,13 @@ int runProgram(const std::string& path, const std::vector<std::string>& argument
   std::vector<char*> argv{const_cast<char*>(path.c_str())};
   for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
   argv.push_back(nullptr);
+  // Checked first: where posix_spawn cannot see its child's exec fail (glibc
+  // before 2.24, or under qemu-user), a missing program would look like a
+  // program that exited with 127.
+  if (::access(path.c_str(), X_OK) != 0) {
+    error = std::strerror(errno);
+    return -1;
+  }
   pid_t pid = 0;
   const int started = ::posix_spawn(&pid, path.c_str(), nullptr, nullptr, argv.data(), environ);
   if (started != 0) {
