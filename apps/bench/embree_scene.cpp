@@ -10,6 +10,15 @@
 
 namespace pathlab::bench {
 
+namespace {
+// A new geometry of `type`; an Embree built without it gives none.
+RTCGeometry newGeometry(RTCDevice device, RTCGeometryType type, const char* what) {
+  RTCGeometry geometry = rtcNewGeometry(device, type);
+  if (!geometry) throw Error(std::string("Embree: this build of Embree has no ") + what);
+  return geometry;
+}
+}  // namespace
+
 struct EmbreeScene::Handles {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
@@ -36,7 +45,7 @@ void EmbreeScene::build(const Scene& scene, int buildThreads) {
   uint32_t primitive = 0;
   for (const TriangleMesh& mesh : scene.meshes) {
     if (mesh.triangles.empty()) continue;
-    RTCGeometry geometry = rtcNewGeometry(handles_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    RTCGeometry geometry = newGeometry(handles_->device, RTC_GEOMETRY_TYPE_TRIANGLE, "triangles");
     // rtcSetNewGeometryBuffer pads the allocation as Embree's SIMD loads need.
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
                                                                   RTC_FORMAT_FLOAT3, 3 * sizeof(float),
@@ -53,7 +62,7 @@ void EmbreeScene::build(const Scene& scene, int buildThreads) {
     primitive += uint32_t(mesh.triangles.size());
   }
   if (!scene.spheres.empty()) {
-    RTCGeometry geometry = rtcNewGeometry(handles_->device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+    RTCGeometry geometry = newGeometry(handles_->device, RTC_GEOMETRY_TYPE_SPHERE_POINT, "sphere points");
     auto* points = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
                                                                 4 * sizeof(float), scene.spheres.size()));
     for (size_t i = 0; i < scene.spheres.size(); ++i) {
