@@ -231,6 +231,12 @@ std::optional<Json> referenceTask3Speed(const BvhBenchOptions& options, int thre
   return json;
 }
 
+// ours / theirs, when theirs was measured and is not 0 (an empty ray set).
+std::optional<double> ratioTo(double ours, std::optional<double> theirs) {
+  if (!theirs || !(*theirs > 0.0)) return std::nullopt;
+  return ours / *theirs;
+}
+
 struct SetResult {
   double task1 = 0.0, taskN = 0.0;  // task 3's BVH (with task 2's triangle test in its leaves)
   std::optional<double> embree1, embreeN;
@@ -410,8 +416,7 @@ int runBvhBench(const BvhBenchOptions& options) {
   Json json;
   for (size_t s = 0; s < sets.size(); ++s) {
     const SetResult& r = results[s];
-    std::optional<double> ratio1, ratioN;
-    if (r.embree1 && *r.embree1 > 0.0 && *r.embreeN > 0.0) ratio1 = r.task1 / *r.embree1, ratioN = r.taskN / *r.embreeN;
+    const std::optional<double> ratio1 = ratioTo(r.task1, r.embree1), ratioN = ratioTo(r.taskN, r.embreeN);
     std::printf("%-8s %8zu %8s | %s %s %s | %s %s %s | %s\n", sets[s].name, sets[s].rays.size(), "Mrays/s",
                 cell(r.task1).c_str(), cell(r.embree1).c_str(), cell(ratio1).c_str(), cell(r.taskN).c_str(),
                 cell(r.embreeN).c_str(), cell(ratioN).c_str(),
@@ -429,8 +434,7 @@ int runBvhBench(const BvhBenchOptions& options) {
               wide.usesAvx2() ? "eight boxes or triangles per AVX2 test" : "four boxes or triangles per SSE2 test");
   for (size_t s = 0; s < sets.size(); ++s) {
     const SetResult& r = results[s];
-    std::optional<double> ratio1, ratioN;
-    if (r.embree1 && *r.embree1 > 0.0 && *r.embreeN > 0.0) ratio1 = r.fast1 / *r.embree1, ratioN = r.fastN / *r.embreeN;
+    const std::optional<double> ratio1 = ratioTo(r.fast1, r.embree1), ratioN = ratioTo(r.fastN, r.embreeN);
     std::printf("%-8s %8zu %8s | %s %s %s | %s %s %s | %zu vs task 3\n", sets[s].name, sets[s].rays.size(), "Mrays/s",
                 cell(r.fast1).c_str(), cell(r.embree1).c_str(), cell(ratio1).c_str(), cell(r.fastN).c_str(),
                 cell(r.embreeN).c_str(), cell(ratioN).c_str(), r.fastMismatches);
@@ -452,8 +456,8 @@ int runBvhBench(const BvhBenchOptions& options) {
         const SetResult& r = results[s];
         // Shadow and diffuse rays start at the primary rays' hits: other hits, other rays.
         const bool sameRays = refRays == sets[s].rays.size() && refRays > 0 && ref1 > 0.0 && refN > 0.0;
-        std::optional<double> ratio1, ratioN;
-        if (sameRays) ratio1 = r.task1 / ref1, ratioN = r.taskN / refN;
+        const std::optional<double> ratio1 = sameRays ? ratioTo(r.task1, ref1) : std::nullopt;
+        const std::optional<double> ratioN = sameRays ? ratioTo(r.taskN, refN) : std::nullopt;
         std::printf("%-8s %8zu %8s | %7.2f %7s %s | %7.2f %7s %s | %s\n", sets[s].name, refRays, "Mrays/s", ref1, "",
                     cell(ratio1).c_str(), refN, "", cell(ratioN).c_str(),
                     sameRays ? "yours / reference"

@@ -68,16 +68,19 @@ QueryShare measureQueryShare(const Scene& scene, const RenderOptions& options) {
   };
   volatile float sink = 0.0f;  // keeps the work from being optimised away
   const double paths = seconds([&] { sink = sink + traceGrid(nullptr).r; });
-  const double queries = seconds([&] {
-    size_t found = 0;
-    for (const TracedRay& traced : rays) {
-      found += traced.shadow ? accelerator.occluded(traced.ray, traced.range)
-                             : accelerator.intersect(traced.ray, traced.range).has_value();
-    }
-    sink = sink + float(found);
-  });
+  // The recorded rays alone through `queries` (the accelerator, or Embree: the same two calls).
+  auto replaySeconds = [&](const auto& queries) {
+    return seconds([&] {
+      size_t found = 0;
+      for (const TracedRay& traced : rays) {
+        found += traced.shadow ? queries.occluded(traced.ray, traced.range)
+                               : queries.intersect(traced.ray, traced.range).has_value();
+      }
+      sink = sink + float(found);
+    });
+  };
   QueryShare share;
-  share.share = queries / paths;
+  share.share = replaySeconds(accelerator) / paths;
   share.rays = rays.size();
 #ifdef PATHLAB_HAVE_EMBREE
   try {
@@ -92,15 +95,7 @@ QueryShare measureQueryShare(const Scene& scene, const RenderOptions& options) {
       }
     }
     share.embreeAgreement = rays.empty() ? 1.0 : double(alike) / double(rays.size());
-    share.embreeShare = seconds([&] {
-                          size_t found = 0;
-                          for (const TracedRay& traced : rays) {
-                            found += traced.shadow ? embree.occluded(traced.ray, traced.range)
-                                                   : embree.intersect(traced.ray, traced.range).has_value();
-                          }
-                          sink = sink + float(found);
-                        }) /
-                        paths;
+    share.embreeShare = replaySeconds(embree) / paths;
   } catch (const Error& error) {  // the comparison is extra: the render's numbers stand without it
     share.embreeProblem = error.what();
   }
