@@ -227,7 +227,8 @@ function(pathlab_task_variant n requested out)
   set(${out} ${v} PARENT_SCOPE)
 endfunction()
 
-# Human-readable summary of the configured choice, compiled into the binaries.
+# Human-readable summary of the configured choice, compiled into the binaries
+# (pathlab_add_task_summary).
 function(pathlab_task_summary out)
   cmake_parse_arguments(ARG "" "VARIANT" "VARIANTS" ${ARGN})
   if(NOT ARG_VARIANT)
@@ -245,4 +246,18 @@ function(pathlab_task_summary out)
   endforeach()
   string(STRIP "${s}" s)
   set(${out} "${s}" PARENT_SCOPE)
+endfunction()
+
+# pathlab_add_task_summary(TARGET [VARIANT v | VARIANTS v1 ... vN]):
+# the program's linkedTaskSummary() (apps/task_summary.h), a one-line source
+# of its own, so the sources that programs share are compiled once for every
+# choice of tasks.
+function(pathlab_add_task_summary target)
+  pathlab_task_summary(summary ${ARGN})
+  set(file ${CMAKE_BINARY_DIR}/task-summaries/${target}.cpp)
+  file(CONFIGURE OUTPUT ${file} CONTENT "#include \"task_summary.h\"
+const char* pathlab::linkedTaskSummary() { return \"${summary}\"; }
+")
+  target_sources(${target} PRIVATE ${file})
+  target_include_directories(${target} PRIVATE ${CMAKE_SOURCE_DIR}/apps)
 endfunction()

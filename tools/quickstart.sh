@@ -13,15 +13,16 @@ cd "$(dirname "$0")/.."
 source tools/packages.sh
 
 # The release preset (CMakePresets.json): Ninja, Release, tests on.
+# build [TARGET...]: those targets only (none: everything).
 build() {
   cmake --preset release > /dev/null
-  cmake --build --preset release --parallel "$(nproc)"
+  cmake --build --preset release --parallel "$(nproc)" ${1:+--target "$@"}
 }
 
 case "${1:-}" in
   render)
     install_packages "${pathlab_build[@]}"
-    build
+    build pathlab  # the renderer alone: the suites and tools build with the test command
     ./build/pathlab -o render.png
     echo "Wrote $(pwd)/render.png"
     ;;

@@ -2,11 +2,11 @@
 // says whose code ran: "yours" (the student's file: tasks/, or the folder
 // PATHLAB_STUDENT_DIR names) or "reference" (solutions/). CMake chooses per
 // task (PATHLAB_TASKS, PATHLAB_TASKn: cmake/PathLabTasks.cmake) and records
-// the choice as PATHLAB_TASK_SUMMARY ("1:reference 2:student ..."), the
-// string `pathlab --version` prints. A binary compiled without it still knows
-// one case for sure: a task with no solutions/ file when the build was
-// configured (a student release; core/task_list.h) can only be the
-// student's; anything else is reported as "unknown", never guessed.
+// the choice as linkedTaskSummary() ("1:reference 2:student ..."), the
+// string `pathlab --version` prints. A summary that does not name a task
+// still tells one case for sure: a task with no solutions/ file when the
+// build was configured (a student release; core/task_list.h) can only be
+// the student's; anything else is reported as "unknown", never guessed.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/task_list.h"
+#include "task_summary.h"
 
 namespace pathlab::bench {
 
@@ -34,17 +35,15 @@ inline const char* codeName(Code code) {
 
 struct LinkedTasks {
   std::array<Code, kTaskCount + 1> code{};  // code[1] .. code[kTaskCount]
-  bool recorded = false;       // from the build's PATHLAB_TASK_SUMMARY
+  bool recorded = false;       // from linkedTaskSummary()
 
   Code operator[](int task) const { return code[size_t(task)]; }
 };
 
-// `summary`: "1:reference 2:student ..." as CMake writes it; nullptr when
-// the binary was compiled without it.
+// `summary`: "1:reference 2:student ..." as CMake writes it.
 inline LinkedTasks parseTaskSummary(const char* summary) {
   LinkedTasks tasks;
   for (int n = 1; n <= kTaskCount; ++n) tasks.code[size_t(n)] = kTaskHasSolution[n] ? Code::Unknown : Code::Yours;
-  if (!summary) return tasks;
   std::istringstream in(summary);
   for (std::string entry; in >> entry;) {
     const size_t colon = entry.find(':');
@@ -60,13 +59,7 @@ inline LinkedTasks parseTaskSummary(const char* summary) {
   return tasks;
 }
 
-inline LinkedTasks linkedTasks() {
-#ifdef PATHLAB_TASK_SUMMARY
-  return parseTaskSummary(PATHLAB_TASK_SUMMARY);
-#else
-  return parseTaskSummary(nullptr);
-#endif
-}
+inline LinkedTasks linkedTasks() { return parseTaskSummary(linkedTaskSummary()); }
 
 // "task 5 yours", "tasks 1-4, 6-7 reference; task 5 yours": the given tasks
 // grouped by whose code they are.
@@ -104,7 +97,7 @@ inline std::string describeAllTasks(const LinkedTasks& tasks) {
   std::string out = describeTasks(tasks, allTaskNumbers());
   for (int n = 1; n <= kTaskCount; ++n) {
     if (tasks[n] != Code::Unknown) continue;
-    return out + " (this pathlab-bench was compiled without PATHLAB_TASK_SUMMARY, the record of whose code it links)";
+    return out + " (the task summary this pathlab-bench was built with does not say whose code it links)";
   }
   return out;
 }

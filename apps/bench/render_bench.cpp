@@ -117,7 +117,7 @@ int runRenderBench(const RenderBenchOptions& options) {
   RenderOptions render;
   render.threads = options.threads > 0 ? options.threads : defaultThreadCount();
   render.progress = !options.json;
-  render.traversal = defaultTraversal(PATHLAB_TASK_SUMMARY);
+  render.traversal = defaultTraversal(linkedTaskSummary());
   if (!options.accel.empty()) {
     const std::optional<Traversal> traversal = traversalFromName(options.accel);
     if (!traversal) throw Error("--accel: unknown traversal " + inQuotes(options.accel) + " (task3, fast)");

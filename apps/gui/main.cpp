@@ -10,10 +10,7 @@
 #include "app.h"
 #include "util/error.h"
 #include "scene/scene_io.h"
-
-#ifndef PATHLAB_TASK_SUMMARY
-#define PATHLAB_TASK_SUMMARY "unknown"
-#endif
+#include "task_summary.h"
 
 namespace {
 
@@ -41,7 +38,7 @@ int run(const Arguments& args) {
   gui::AppOptions options;
   options.panel = args.panel;
   options.threads = args.threads;
-  options.taskSummary = PATHLAB_TASK_SUMMARY;
+  options.taskSummary = linkedTaskSummary();
   if (!args.script.empty()) options.script = gui::parseScript(readFile(args.script), args.script);
   if (!args.screenshot.empty()) {
     if (!isWritableImagePath(args.screenshot)) throw Error("--screenshot: " + args.screenshot + ": use a .png file");
@@ -76,7 +73,7 @@ int main(int argc, char** argv) {
   cli.add_option("--window", args.width, "window width in pixels")->check(CLI::Range(640, 8192));
   cli.add_option("--timeout", args.timeout, "seconds a --script or --screenshot run may take (default 600)")
       ->check(CLI::Range(1.0, 86400.0));
-  cli.set_version_flag("--version", "pathlab-gui 0.1 (tasks " PATHLAB_TASK_SUMMARY ")");
+  cli.set_version_flag("--version", std::string("pathlab-gui 0.1 (tasks ") + linkedTaskSummary() + ")");
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

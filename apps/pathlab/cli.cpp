@@ -15,13 +15,10 @@
 #include "lab_cli.h"
 #include "render/render.h"
 #include "scene/scene_io.h"
+#include "task_summary.h"
 #include "util/error.h"
 #include "util/platform.h"
 #include "util/progress.h"
-
-#ifndef PATHLAB_TASK_SUMMARY
-#define PATHLAB_TASK_SUMMARY "unknown"
-#endif
 
 namespace pathlab {
 namespace {
@@ -134,7 +131,7 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   auto integrator = integratorFromName(args.integrator);
   if (!integrator) throw Error("--integrator: unknown integrator " + inQuotes(args.integrator) + " (path, direct, preview, normals)");
   options.integrator = *integrator;
-  options.traversal = defaultTraversal(PATHLAB_TASK_SUMMARY);
+  options.traversal = defaultTraversal(linkedTaskSummary());
   if (!args.accel.empty()) {
     auto traversal = traversalFromName(args.accel);
     if (!traversal) throw Error("--accel: unknown traversal " + inQuotes(args.accel) + " (task3, fast)");
@@ -179,7 +176,7 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   if (!args.quiet) {
     std::printf("%s: %dx%d, %d spp, %s integrator, %s traversal, %s samples, tasks %s\n", args.output.c_str(),
                 settings.width, settings.height, settings.samplesPerPixel, integratorName(options.integrator),
-                traversalName(options.traversal), sampleSequenceName(options.sampler), PATHLAB_TASK_SUMMARY);
+                traversalName(options.traversal), sampleSequenceName(options.sampler), linkedTaskSummary());
     std::printf("time %.3f s (BVH build %.1f ms), %s samples/s, %s rays/s\n", stats.seconds, stats.buildSeconds * 1e3,
                 formatRate(double(stats.samples) / stats.seconds).c_str(),
                 formatRate(double(stats.rays) / stats.seconds).c_str());
@@ -194,7 +191,7 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
                         {"height", settings.height}, {"spp", stats.completedSpp}, {"max_depth", settings.maxDepth},
                         {"light_samples", settings.lightSamples}, {"integrator", integratorName(options.integrator)},
                         {"traversal", traversalName(options.traversal)},
-                        {"sampler", sampleSequenceName(options.sampler)}, {"tasks", PATHLAB_TASK_SUMMARY},
+                        {"sampler", sampleSequenceName(options.sampler)}, {"tasks", linkedTaskSummary()},
                         {"threads", options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency())}, {"seconds", stats.seconds},
                         {"build_seconds", stats.buildSeconds}, {"samples", stats.samples}, {"rays", stats.rays},
                         {"samples_per_second", double(stats.samples) / stats.seconds},
@@ -257,7 +254,7 @@ int runDebug(const DebugArgs& args) {
 int runCli(int argc, char** argv, const std::atomic<bool>& cancel, std::atomic<bool>& rendering) {
   CLI::App app{"PathLab: a Monte Carlo path tracer to learn from.\n"
                "Renders SCENE (a .json file; none = the embedded Cornell box) to an image."};
-  app.set_version_flag("--version", "pathlab 0.1 (tasks " PATHLAB_TASK_SUMMARY ")");
+  app.set_version_flag("--version", std::string("pathlab 0.1 (tasks ") + linkedTaskSummary() + ")");
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // a repeated flag: last wins
   RenderArgs render;
   app.add_option("scene", render.scene, "Scene file (.json); omit for the built-in Cornell box");
