@@ -181,8 +181,9 @@ function(pathlab_import_reference_objects status)
 endfunction()
 
 # pathlab_link_tasks(TARGET <target> [VARIANT reference|student|selected]
-#                    [TASK n TASK_VARIANT reference|student|selected])
+#                    [TASK n TASK_VARIANT reference|student|selected] [FRAMEWORK library])
 #   VARIANT       implementation of every task (default: selected)
+#   FRAMEWORK     the framework's layers it links (default pathlab_framework: all)
 #   TASK n        task n uses TASK_VARIANT instead: a suite for task n links
 #                 task n as configured and every other task from the
 #                 reference, so one mistake is never punished twice
@@ -190,9 +191,12 @@ endfunction()
 #   reference     falls back to the student file in a student release
 #                 (a tree without solutions/)
 function(pathlab_link_tasks)
-  cmake_parse_arguments(ARG "" "TARGET;VARIANT;TASK;TASK_VARIANT" "VARIANTS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TARGET;VARIANT;TASK;TASK_VARIANT;FRAMEWORK" "VARIANTS" ${ARGN})
   if(NOT ARG_VARIANT)
     set(ARG_VARIANT selected)
+  endif()
+  if(NOT ARG_FRAMEWORK)
+    set(ARG_FRAMEWORK pathlab_framework)
   endif()
   foreach(n RANGE 1 ${PATHLAB_TASK_COUNT})
     set(v ${ARG_VARIANT})
@@ -206,7 +210,7 @@ function(pathlab_link_tasks)
     pathlab_task_variant(${n} ${v} v)
     target_sources(${ARG_TARGET} PRIVATE $<TARGET_OBJECTS:pathlab_task${n}_${v}>)
   endforeach()
-  target_link_libraries(${ARG_TARGET} PRIVATE pathlab_framework)
+  target_link_libraries(${ARG_TARGET} PRIVATE ${ARG_FRAMEWORK})
 endfunction()
 
 # pathlab_task_variant(n requested out): the implementation task n links.

@@ -1,16 +1,26 @@
 #!/usr/bin/env bash
 # The hardening jobs CI runs after the test suite (docs/reliability.md):
-#   1. ASan + UBSan: every test except the grader's own rebuilds and the
-#      validity matrix (same code as the suites, 65 more builds).
-#   2. TSan: the multithreaded render loop (framework tests), the CLI, the
-#      GUI's background workers, and the grader on tasks 1 and 5.
-#   3. libFuzzer: each of the four targets for RUNS executions (default 2000),
-#      with the seed fixed at 1 so the job is repeatable.
+#   asan   ASan + UBSan: every test except the grader's own rebuilds and the
+#          validity matrix (same code as the suites, 65 more builds).
+#   tsan   TSan: the multithreaded render loop (framework tests), the CLI, the
+#          GUI's background workers, and the grader on tasks 1 and 5 (with the
+#          same TSan build).
+#   fuzz   libFuzzer: each of the four targets for RUNS executions (default
+#          2000), with the seed fixed at 1 so the job is repeatable.
 # Installs clang and its sanitizer runtime if missing (Debian packages).
-#   tools/hardening.sh [RUNS]
+#   tools/hardening.sh [RUNS] [asan] [tsan] [fuzz]     (no job named: all three)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-runs=${1:-2000}
+runs=2000
+jobs=()
+for arg in "$@"; do
+  case $arg in
+    asan|tsan|fuzz) jobs+=("$arg") ;;
+    *[!0-9]*|"") echo "usage: tools/hardening.sh [RUNS] [asan] [tsan] [fuzz]" >&2; exit 2 ;;
+    *) runs=$arg ;;
+  esac
+done
+((${#jobs[@]})) || jobs=(asan tsan fuzz)
 source tools/packages.sh
 install_packages "${pathlab_hardening[@]}"
 
@@ -19,20 +29,27 @@ step() { echo; echo "== $* ($(date +%T))"; }
 # build's output goes to a log shown only on failure.
 workflow() {
   local log="build-$1.log"
-  if ! CTEST_PARALLEL_LEVEL="$(nproc)" cmake --workflow --preset "$1" > "$log" 2>&1; then
+  if ! CTEST_PARALLEL_LEVEL="$((2 * $(nproc)))" cmake --workflow --preset "$1" > "$log" 2>&1; then
     grep -E "Failed|\*\*\*|error:" "$log" | head -40 || true
     tail -40 "$log"
     exit 1
   fi
   sed -n '/^Test project/,$p' "$log" | grep -E "tests passed|Total Test time|Label Time|^ +Start|Passed|Failed" | tail -30
 }
-step "ASan + UBSan: build and tests (cmake --workflow --preset asan)"
-workflow asan
-step "TSan: build and tests (cmake --workflow --preset tsan)"
-workflow tsan
-step "TSan: the grader on the reference, tasks 1 and 5 (each test case in its own TSan process)"
-tools/grade solutions --tasks 1,5 --sanitize thread --build-dir build-tsan-grade \
-  --out build-tsan-grade/results.json --fail-under 100 --timeout 300
-step "fuzzing, $runs executions per target"
-tools/fuzz "$runs" 1  # a fixed seed: the CI run is repeatable
-step "hardening jobs passed"
+for job in "${jobs[@]}"; do
+  case $job in
+    asan)
+      step "ASan + UBSan: build and tests (cmake --workflow --preset asan)"
+      workflow asan ;;
+    tsan)
+      step "TSan: build and tests (cmake --workflow --preset tsan)"
+      workflow tsan
+      step "TSan: the grader on the reference, tasks 1 and 5, in the same build (each test case in its own TSan process)"
+      tools/grade solutions --tasks 1,5 --sanitize thread --build-dir build-tsan \
+        --out build-tsan/grade-results.json --fail-under 100 --timeout 300 ;;
+    fuzz)
+      step "fuzzing, $runs executions per target"
+      tools/fuzz "$runs" 1 ;;  # a fixed seed: the CI run is repeatable
+  esac
+done
+step "hardening jobs passed: ${jobs[*]}"

@@ -29,6 +29,9 @@ pathlab_aarch64=(cmake ninja-build pkg-config python3 g++-aarch64-linux-gnu qemu
 # (No fast_float: there the OBJ reader's std::from_chars path is the one tested.)
 pathlab_aarch64_root=(libc6-dev libstdc++-12-dev libglm-dev libopenimageio-dev doctest-dev nlohmann-json3-dev
                       libcli11-dev libpugixml-dev)
+# Everything CI's stages use (.ci/run installs it first, timed as a stage of its own).
+pathlab_ci=("${pathlab_build[@]}" "${pathlab_test[@]}" "${pathlab_hardening[@]}" "${pathlab_libcxx[@]}"
+            "${pathlab_aarch64[@]}")
 # Plots (make-report, the demos' figures).
 pathlab_plots=(python3-matplotlib)
 

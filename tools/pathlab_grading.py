@@ -275,6 +275,20 @@ class Grader:
             self.record(task, name, 0, points, message, visibility=visibility)
 
     def configure(self):
+        """The "grade" preset in a new build folder. A folder that already holds
+        a configured build (an earlier grade's, the course's own release or
+        sanitizer build) is used as it is: its judges and flags, no second build."""
+        cache = self.build / "CMakeCache.txt"
+        if cache.exists():
+            values = dict(re.findall(r"^(PATHLAB_SUBMISSION_OBJECTS|PATHLAB_SANITIZE):\w+=(.*)$",
+                                     cache.read_text(errors="replace"), re.M))
+            if values.get("PATHLAB_SANITIZE", "") != self.args.sanitize:
+                raise RuntimeError(f"{self.build} is built with sanitizers '{values.get('PATHLAB_SANITIZE', '')}', "
+                                   f"not '{self.args.sanitize}': choose another --build-dir")
+            if values.get("PATHLAB_SUBMISSION_OBJECTS"):
+                self.objects = Path(values["PATHLAB_SUBMISSION_OBJECTS"])
+            self.objects.mkdir(parents=True, exist_ok=True)
+            return
         sanitize = [f"-DPATHLAB_SANITIZE={self.args.sanitize}", "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -g1"] \
             if self.args.sanitize else []
         self.objects.mkdir(parents=True, exist_ok=True)
@@ -448,9 +462,9 @@ class Grader:
         for index, (name, points, visibility) in enumerate(cases):
             left = task_deadline - time.time()
             if left < 1.0:
-                which = "submission's" if task_deadline >= deadline else f"task {task}'s"
+                which = "the submission's" if task_deadline >= deadline else f"task {task}'s"
                 budget = self.args.budget if task_deadline >= deadline else self.args.task_budget
-                self.record(task, name, 0, points, f"not run: the {which} time budget of {budget:g} s was used up "
+                self.record(task, name, 0, points, f"not run: {which} time budget of {budget:g} s was used up "
                             "by the tests before it", visibility=visibility)
                 continue
             limit = min(self.args.timeout, left)

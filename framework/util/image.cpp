@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <mutex>
@@ -57,6 +58,65 @@ class QuietStderr {
   int saved_ = -1;
 };
 
+// The codec's functions (image_codec.h), from the module pathlab_image_codec,
+// loaded the first time the program reads or writes an image: OpenImageIO
+// brings some 260 shared libraries, which cost 0.15 s and 100 MB at every
+// start of a program that links them, and most starts (a suite's test case,
+// a bad-input run, the sampling lab) touch no image file.
+struct Codec {
+  decltype(&codecEncode) encode = nullptr;
+  decltype(&codecOpen) open = nullptr;
+  decltype(&codecRead) read = nullptr;
+  decltype(&codecClose) close = nullptr;
+  std::string error;  // why it could not be loaded ("" when it was)
+};
+
+template <typename Function>
+void find(void* module, const char* name, Function& function, std::string& error) {
+  function = reinterpret_cast<Function>(sharedLibraryFunction(module, name));
+  if (!function && error.empty()) error = std::string("it has no function ") + name;
+}
+
+Codec loadCodec() {
+  // Where the build put it (PATHLAB_IMAGE_CODEC_PATH, framework/CMakeLists.txt),
+  // then beside the program (a program copied elsewhere with the module);
+  // or only the file the environment variable PATHLAB_IMAGE_CODEC names.
+  std::vector<std::string> places;
+  if (const char* chosen = std::getenv("PATHLAB_IMAGE_CODEC"); chosen && *chosen) {
+    places.push_back(chosen);
+  } else {
+    places.push_back(PATHLAB_IMAGE_CODEC_PATH);
+    const std::string self = currentExecutablePath();
+    if (!self.empty()) {
+      places.push_back((std::filesystem::path(self).parent_path() / PATHLAB_IMAGE_CODEC_FILE).string());
+    }
+  }
+  Codec codec;
+  std::string tried;
+  for (const std::string& place : places) {
+    std::string why;
+    void* module = loadSharedLibrary(place, why);
+    if (module) {
+      find(module, "codecEncode", codec.encode, why);
+      find(module, "codecOpen", codec.open, why);
+      find(module, "codecRead", codec.read, why);
+      find(module, "codecClose", codec.close, why);
+      if (why.empty()) return codec;
+    }
+    if (why.rfind(place + ": ", 0) != 0) why = place + ": " + why;  // dlerror names the file, Windows does not
+    tried += (tried.empty() ? "" : "; ") + oneLine(why);
+  }
+  codec.error = "cannot read or write images: the image codec (OpenImageIO, in " PATHLAB_IMAGE_CODEC_FILE
+                ") did not load (" + tried + ")";
+  return codec;
+}
+
+const Codec& imageCodec() {
+  static const Codec loaded = loadCodec();  // once, thread-safe
+  if (!loaded.error.empty()) throw Error(loaded.error);
+  return loaded;
+}
+
 }  // namespace
 
 float linearToSrgb(float linear) {
@@ -108,7 +168,7 @@ void writeImage(const Image& image, const std::string& finalPath, const ImageMet
     static_cast<std::string*>(context)->assign(reinterpret_cast<const char*>(data), size);
   };
   char error[kCodecErrorBytes] = "";
-  if (!codecEncode(ext.c_str() + 1, image.width, image.height, linear, pixels, keys.data(), values.data(),
+  if (!imageCodec().encode(ext.c_str() + 1, image.width, image.height, linear, pixels, keys.data(), values.data(),
                    int(keys.size()), sink, &bytes, error)) {
     throw Error(shown(finalPath, 200) + ": " + oneLine(error));
   }
@@ -125,8 +185,9 @@ Image readImage(const std::string& path, bool* hasAlpha) {
   if (!format.empty()) format.erase(0, 1);
   CodecHeader header{};
   char error[kCodecErrorBytes] = "";
+  const Codec& codec = imageCodec();
   const std::unique_ptr<CodecReader, void (*)(CodecReader*)> reader(
-      codecOpen(path.c_str(), format.empty() ? path.c_str() : format.c_str(), &header, error), codecClose);
+      codec.open(path.c_str(), format.empty() ? path.c_str() : format.c_str(), &header, error), codec.close);
   if (!reader) throw Error(shown(path, 200) + ": " + oneLine(error));
   if (hasAlpha) *hasAlpha = header.hasAlpha != 0;
   if (header.width <= 0 || header.height <= 0 || header.channels <= 0) {
@@ -154,7 +215,7 @@ Image readImage(const std::string& path, bool* hasAlpha) {
   // Read straight into the image: RGB, or one grey channel copied to all three.
   const int channels = header.channels >= 3 ? 3 : 1;
   Image image(header.width, header.height);
-  if (!codecRead(reader.get(), channels, &image.pixels[0].x, sizeof(Color), error)) {
+  if (!codec.read(reader.get(), channels, &image.pixels[0].x, sizeof(Color), error)) {
     throw Error(shown(path, 200) + ": " + oneLine(error));
   }
   const bool decodeSrgb = header.isInteger8or16 != 0;

@@ -67,6 +67,14 @@ long currentProcessId();
 // not say): finds the files built beside it.
 std::string currentExecutablePath();
 
+// A shared library opened at run time (the image codec: OpenImageIO and the
+// libraries it brings load only when a program first reads or writes an
+// image). Returns its handle, or null with `error` set to the system's words.
+// Libraries stay loaded until the process ends.
+void* loadSharedLibrary(const std::string& path, std::string& error);
+// The address of the function `name` in a library loadSharedLibrary opened, or null.
+void* sharedLibraryFunction(void* library, const char* name);
+
 // Runs the program at `path` with `arguments` and waits for it to end. No
 // shell: each argument reaches it whole, spaces and quotes included. Its
 // output goes where this process's goes. Returns its exit code, or -1 with

@@ -4,6 +4,7 @@
 
 #include "util/platform.h"
 
+#include <dlfcn.h>
 #include <fcntl.h>
 #include <pthread.h>
 #if defined(__APPLE__)
@@ -151,6 +152,18 @@ std::string currentExecutablePath() {
   return n > 0 ? std::string(self, size_t(n)) : std::string();
 #endif
 }
+
+void* loadSharedLibrary(const std::string& path, std::string& error) {
+  // RTLD_LOCAL: its symbols (and those of the libraries it needs) stay its own.
+  void* library = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!library) {
+    const char* why = ::dlerror();
+    error = why ? why : "dlopen failed";
+  }
+  return library;
+}
+
+void* sharedLibraryFunction(void* library, const char* name) { return ::dlsym(library, name); }
 
 int runProgram(const std::string& path, const std::vector<std::string>& arguments, std::string& error) {
   std::vector<char*> argv{const_cast<char*>(path.c_str())};

@@ -188,6 +188,17 @@ std::string currentExecutablePath() {
   return utf8;
 }
 
+void* loadSharedLibrary(const std::string& path, std::string& error) {
+  // The DLL's own dependencies are looked for beside it first, then on PATH.
+  HMODULE library = LoadLibraryExW(widen(path).c_str(), nullptr, LOAD_WITH_ALTERED_SEARCH_PATH);
+  if (!library) error = describeError(GetLastError());
+  return reinterpret_cast<void*>(library);
+}
+
+void* sharedLibraryFunction(void* library, const char* name) {
+  return reinterpret_cast<void*>(GetProcAddress(static_cast<HMODULE>(library), name));
+}
+
 namespace {
 // One argument as the C runtime's command-line parser reads it back
 // (CommandLineToArgvW's rules): quoted, a quote escaped with a backslash,

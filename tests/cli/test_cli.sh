@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # End-to-end checks of the `pathlab` command line, as a user runs it.
-# usage: test_cli.sh PATHLAB PATHLAB_ALL_STUBS INPUTS_DIR
-# PATHLAB links the configured tasks, PATHLAB_ALL_STUBS every task from the
+# usage: test_cli.sh PATHLAB PATHLAB_STUBS INPUTS_DIR
+# PATHLAB links the configured tasks, PATHLAB_STUBS every task from the
 # student files (tasks/). Nothing here depends on which tasks are done: in
 # the course repository the student files are the untouched stubs, in a
 # student release they are the student's work, any mix of done and undone.
@@ -60,6 +60,16 @@ out=$("$pathlab" -q -s 2 -d 64x48 -o "$work/again.exr" --ref "$work/one.exr" 2>&
 grep -q "RMSE" <<< "$out" && grep -q "relMSE" <<< "$out" && pass || fail "--ref does not print RMSE and relMSE: $out"
 out=$("$pathlab" -q -s 1 -d 32x24 --integrator normals -o "$work/normals.png" 2>&1) && pass || fail "normals integrator: $out"
 "$pathlab" --help > "$work/help.txt" && grep -q -- "--seed" "$work/help.txt" && pass || fail "--help"
+
+# The image codec (OpenImageIO and the libraries it brings) loads only when an
+# image is read or written (framework/util/image.cpp): not at every start.
+if command -v readelf > /dev/null && readelf -h "$pathlab" > /dev/null 2>&1; then
+  ! readelf -d "$pathlab" | grep -q "NEEDED.*OpenImageIO" && pass || fail "pathlab links OpenImageIO at start"
+fi
+out=$(PATHLAB_IMAGE_CODEC="$work/no-such-codec.so" "$pathlab" -q -s 1 -d 8x8 -o "$work/no-codec.png" 2>&1)
+rc=$?
+[[ $rc -eq 1 && $(wc -l <<< "$out") -eq 1 && $out == *"image codec"*"no-such-codec.so"* ]] && pass ||
+  fail "a codec that does not load: exit $rc, expected 1 and one line naming it: $out"
 
 # Every task on the student files: still renders and exits 0, and says which
 # TODOs are missing: task 1's (every render reaches it) when its file is

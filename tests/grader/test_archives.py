@@ -4,7 +4,7 @@ encrypted data, a link, a name too long, a file where a folder of the same
 name is) is left out with a note and the rest is graded; an archive that
 cannot be read at all, or unpacks to too much, scores 0 with a message.
 
-usage: test_archives.py REPO_ROOT BUILD_DIR"""
+usage: test_archives.py REPO_ROOT WORK_DIR GRADE_BUILD_DIR"""
 import json
 import shutil
 import stat
@@ -15,7 +15,7 @@ import warnings
 import zipfile
 from pathlib import Path
 
-root, build = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
+root, build, grade_build = (Path(a).resolve() for a in sys.argv[1:4])
 work = build / "archives"
 shutil.rmtree(work, ignore_errors=True)
 work.mkdir(parents=True)
@@ -86,7 +86,7 @@ failures = []
 for name, path, full, phrase in cases:
     out = work / f"{name}.json"
     grade = subprocess.run([sys.executable, str(root / "tools/grade"), str(path), "--tasks", "1", "--out", str(out),
-                            "--build-dir", str(build / "grade-build")], capture_output=True, text=True, timeout=900)
+                            "--build-dir", str(grade_build)], capture_output=True, text=True, timeout=900)
     problems = []
     if not out.exists():
         problems.append(f"no results.json (exit {grade.returncode}): {grade.stderr[-400:]}")

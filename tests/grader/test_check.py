@@ -15,8 +15,13 @@ a file outside the framework's headers, or that links only with the
 student's own other task (a helper in another task's file), loses that
 task's points as Gradescope's grader does (the rules are the grader's).
 
-usage: test_check.py REPO_ROOT WORK_DIR [--keep]"""
+The release and its check's build (build-check/, the judges linked with
+the compiled reference) are made by a first run with --prepare, which CTest
+runs beside gradescope-zip; the comparison runs once both are done.
+
+usage: test_check.py REPO_ROOT WORK_DIR [--prepare] [--keep]"""
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -25,6 +30,7 @@ from pathlib import Path
 
 root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
 keep = "--keep" in sys.argv[3:]
+prepare_only = "--prepare" in sys.argv[3:]
 graded = work_dir / "gradescope-results"
 work = work_dir / "student-check"
 release = work / "release"
@@ -34,22 +40,17 @@ def per_test(report):
     return {t["name"]: (t["score"], t["max_score"]) for t in report["tests"]}
 
 
-def check(submission: Path, out: Path):
+def check(submission: Path, out: Path, options=()):
     """tools/check in the release, as the README says; (exit code, stdout, results or None)."""
     start = time.time()
-    run = subprocess.run([sys.executable, "tools/check", str(submission), "--out", str(out)], cwd=release,
+    run = subprocess.run([sys.executable, "tools/check", str(submission), "--out", str(out), *options], cwd=release,
                          capture_output=True, text=True, timeout=1800)
     print(f"  tools/check {submission.name}: exit {run.returncode}, {time.time() - start:.0f} s")
     return run.returncode, run.stdout + run.stderr, json.loads(out.read_text()) if out.exists() else None
 
 
-def main() -> int:
-    failures = []
-    kinds = sorted(p.stem for p in graded.glob("*.json"))
-    expected = {"reference", "stubs"}
-    if not expected <= set(kinds) or len(kinds) < 9:
-        print(f"FAIL: {graded} holds {kinds}: run gradescope-zip first (test_gradescope.py)")
-        return 1
+def prepare() -> int:
+    """The student release, made as the TA makes it, and its check's build."""
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
     t = time.time()
@@ -59,11 +60,37 @@ def main() -> int:
     if made.returncode != 0:
         print(f"FAIL: make-student-release:\n{made.stdout[-2000:]}{made.stderr[-2000:]}")
         return 1
+    failures = []
     for absent in ("solutions", "tools/grade", "tests/mutants"):
         if (release / absent).exists():
             failures.append(f"the release has {absent}")
     if not list(release.glob("reference-objects/*/manifest.json")):
         failures.append("the release has no compiled reference (reference-objects/*/manifest.json)")
+    # The check's build, as a student's first tools/check makes it (task 1 of the stubs), then every judge.
+    code, output, report = check(release / "tasks", work / "stubs-task-1.json", ["--tasks", "1"])
+    if report is None:
+        failures.append(f"tools/check on the release's stubs wrote no results.json:\n{output[-2000:]}")
+    built = subprocess.run(["cmake", "--build", str(release / "build-check"), "--target", "pathlab-judges",
+                            "--parallel", str(os.cpu_count() or 2)], capture_output=True, text=True, timeout=1200)
+    if built.returncode != 0:
+        failures.append(f"building the release's judges failed:\n{built.stdout[-2000:]}")
+    for f in failures:
+        print("FAIL:", f)
+    return 1 if failures else 0
+
+
+def main() -> int:
+    if prepare_only:
+        return prepare()
+    failures = []
+    kinds = sorted(p.stem for p in graded.glob("*.json"))
+    expected = {"reference", "stubs"}
+    if not expected <= set(kinds) or len(kinds) < 9:
+        print(f"FAIL: {graded} holds {kinds}: run gradescope-zip first (test_gradescope.py)")
+        return 1
+    if not (release / "build-check" / "pathlab-reference.txt").exists():
+        print(f"FAIL: no student release with its check's build in {release}: run test_check.py --prepare first")
+        return 1
 
     for kind in kinds:
         gradescope = json.loads((graded / f"{kind}.json").read_text())
@@ -87,7 +114,7 @@ def main() -> int:
 
     # The grader's include rule: a framework-internal path is refused, as on Gradescope.
     sneaky = work / "sneaky"
-    sneaky.mkdir()
+    sneaky.mkdir(exist_ok=True)
     source = (root / "solutions/01-camera-rays/camera_rays.cpp").read_text()
     (sneaky / "camera_rays.cpp").write_text('#include "../../framework/core/camera.h"\n' + source)
     _, output, report = check(sneaky, work / "sneaky.json")
@@ -99,7 +126,7 @@ def main() -> int:
     # written in intersection.cpp, used by direct_lighting.cpp): fine in the
     # student's build, 0 for task 4 on Gradescope, and so in the check.
     shared = work / "shared-helper"
-    shared.mkdir()
+    shared.mkdir(exist_ok=True)
     intersection = (root / "solutions/02-intersection/intersection.cpp").read_text()
     end = intersection.rindex("}  // namespace pathlab")
     (shared / "intersection.cpp").write_text(

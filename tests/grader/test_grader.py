@@ -1,8 +1,10 @@
 """The grader under fire: a submission whose task 2 segfaults, whose task 3
 never terminates, whose task 5 returns NaN and whose task 1 prints megabytes
-must get a results.json where every other test is scored normally.
+must get a results.json where every other test is scored normally. Task 3's
+tests that build a tree time out one by one (10 s each) until the task's
+budget (40 s here) is used up, and the rest are reported as not run.
 
-usage: test_grader.py REPO_ROOT BUILD_DIR"""
+usage: test_grader.py REPO_ROOT WORK_DIR GRADE_BUILD_DIR"""
 import json
 import re
 import shutil
@@ -10,7 +12,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-root, build = Path(sys.argv[1]), Path(sys.argv[2])
+root, build, grade_build = Path(sys.argv[1]), Path(sys.argv[2]), Path(sys.argv[3])
 submission = build / "broken-submission"
 shutil.rmtree(submission, ignore_errors=True)
 submission.mkdir(parents=True)
@@ -42,7 +44,7 @@ mutate("path_tracing.cpp", "  return radiance;\n}", "  return radiance * std::na
 
 out = build / "broken-results.json"
 grade = subprocess.run([sys.executable, str(root / "tools" / "grade"), str(submission), "--out", str(out),
-                        "--build-dir", str(build / "grade-build"), "--timeout", "10"],
+                        "--build-dir", str(grade_build), "--timeout", "10", "--task-budget", "40"],
                        capture_output=True, text=True, timeout=1500)
 print(grade.stdout[-2000:], grade.stderr[-2000:])
 report = json.loads(out.read_text())
@@ -57,20 +59,24 @@ for task in (1, 4, 6, 7):  # unharmed: full marks despite the broken tasks aroun
         failures.append(f"task {task} lost points it should not: {lost[:2]}")
 
 
-def expect(task, broken_prefixes, symptom):
-    # Tests that reach the broken step lose their points and say why; the
-    # task's other steps (in their own processes) keep theirs.
+def expect(task, broken_prefixes, symptom, or_else=None):
+    # Tests that reach the broken step lose their points and say why (the
+    # symptom; or_else: what a test past the task's budget says instead, as
+    # long as the first broken test shows the symptom); the task's other
+    # steps (in their own processes) keep theirs.
     broken = [t for t in by_task[task] if any(t["name"].startswith(f"Task {task}: {p}") for p in broken_prefixes)]
     broken_prefix = "/".join(broken_prefixes)
     intact = [t for t in by_task[task] if t not in broken]
-    if not broken or any(t["score"] > 0 or (symptom and symptom not in t["output"]) for t in broken):
+    said = lambda t: not symptom or symptom in t["output"] or (or_else and or_else in t["output"])
+    if not broken or any(t["score"] > 0 or not said(t) for t in broken) or \
+            (symptom and symptom not in broken[0]["output"]):
         failures.append(f"task {task}: the {broken_prefix} tests should score 0 and report {symptom or 'the failure'}")
     if not intact or any(t["score"] != t["max_score"] for t in intact):
         failures.append(f"task {task}: tests away from the broken step should keep their points")
 
 
 expect(2, ["T2.1", "T2.3 image"], "SIGSEGV")      # the triangle test crashes (the image has triangles); spheres pass
-expect(3, ["T3.2", "T3.3", "T3.4"], "timed out")  # the build never ends; the slab test still passes
+expect(3, ["T3.2", "T3.3", "T3.4"], "timed out", "time budget of 40 s was used up")  # the build never ends; the slab test still passes
 expect(5, ["T5.2"], "")                           # NaN radiance; the sampler still passes
 if out.stat().st_size > 1_000_000:
     failures.append(f"results.json is {out.stat().st_size} bytes: output was not clipped")

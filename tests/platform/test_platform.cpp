@@ -89,6 +89,26 @@ void run() {
          "its arguments arrive whole: spaces, quotes, backslashes, an empty one");
   code = runProgram("no-such-program", {}, runError);
   expect(code == -1 && !runError.empty(), "a program that is not there: " + std::to_string(code) + ", " + runError);
+  // loadSharedLibrary: a library of the system's, one of its functions; a library that is not there.
+#if defined(_WIN32)
+  const char* systemLibrary = "kernel32.dll";
+  const char* systemFunction = "GetTickCount";
+#elif defined(__APPLE__)
+  const char* systemLibrary = "/usr/lib/libSystem.B.dylib";
+  const char* systemFunction = "getpid";
+#else
+  const char* systemLibrary = "libc.so.6";
+  const char* systemFunction = "getpid";
+#endif
+  std::string loadError;
+  void* library = loadSharedLibrary(systemLibrary, loadError);
+  expect(library && loadError.empty(), std::string("a shared library loads: ") + systemLibrary + " " + loadError);
+  expect(library && sharedLibraryFunction(library, systemFunction) &&
+             !sharedLibraryFunction(library, "noSuchFunctionInThisLibrary"),
+         "its function is found, a function it lacks is not");
+  loadError.clear();
+  const bool missingLoaded = loadSharedLibrary("no-such-library.so", loadError) != nullptr;
+  expect(!missingLoaded && !loadError.empty(), "a library that is not there: " + loadError);
   e = errorOf([] { writeFileAtomically("no-such-folder/x.txt", "x"); });
   expect(contains(e, "no-such-folder/x.txt: cannot write: "), "a write into a missing folder: " + e);
 
