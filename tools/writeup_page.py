@@ -45,20 +45,25 @@ figcaption p { margin: 2px 0; }
 .compare-label.left { left: 4px; } .compare-label.right { right: 4px; }
 .compare-slider { width: 100%; margin: 6px 0 0; }
 .compare-z { border: 1px solid var(--line); }
+.z-legend { max-width: 460px; margin: 6px 0 12px; }
+table.overview { width: 100%; }
+.z-bar { height: 14px; border: 1px solid var(--line); print-color-adjust: exact; -webkit-print-color-adjust: exact;
+         background: linear-gradient(to right, #0000ff 0%, #0000ff 12%, #000066 12%, #00001a 31%, #000 50%,
+                                     #1a0000 69%, #660000 88%, #ff0000 88%, #ff0000 100%); }
+.z-ticks { position: relative; height: 16px; font-size: 12px; color: var(--muted); }
+.z-ticks span { position: absolute; transform: translateX(-50%); }
 .pass { color: var(--good); font-weight: 600; } .fail { color: var(--bad); font-weight: 600; }
 .answers blockquote { margin: 12px 0 6px; padding: 6px 12px; border-left: 4px solid #5a7fa8; background: #eef3f8;
                       color: #23394f; }
 .answers blockquote p { margin: 2px 0; }
-nav ol { columns: 2; }
 @media print {
   body { max-width: none; padding: 0; font-size: 11pt; }
-  section.task, section.convergence { break-before: page; }
-  figure, .notice, tr { break-inside: avoid; }
+  section.task + section.task, section.convergence { break-before: page; }  /* task 1 starts on page 1 */
+  figure, .notice, tr, .z-legend { break-inside: avoid; }
   .compare-slider, .compare-label { display: none; }
   .compare-frame { position: static; display: flex; gap: 8px; border: none; }
   .compare-frame img { border: 1px solid var(--line); }
   .compare-frame img.yours { position: static; clip-path: none !important; order: -1; }
-  nav { display: none; }
   a { color: inherit; text-decoration: none; }
 }
 """
@@ -192,6 +197,15 @@ def comparison_html(c, folder: str) -> str:
             f'{verdict}</p></figcaption></figure>')
 
 
+# The z-maps' colours (tests/support/image_test.cpp, zScoreMap): within the
+# test's limit L the colour grows as (|z| / L)^2 up to 40 %, past it full.
+Z_LEGEND = ('<div class="z-legend"><div class="z-bar"></div><div class="z-ticks"><span style="left: 12%">'
+            '&minus;L</span><span style="left: 50%">0</span><span style="left: 88%">+L</span></div>'
+            '<p class="meta">Left: yours darker; right: brighter. Black to dim: within noise, as a passing render '
+            'looks. Full blue or red: the block differs by more than the test allows (L, the test\'s limit, is '
+            'given under each picture).</p></div>')
+
+
 def section_html(s) -> str:
     n, folder = s["number"], s["folder"]
     owner = s["owner"]
@@ -210,8 +224,8 @@ def section_html(s) -> str:
         if s["comparisons"]:
             parts.append(f'<p class="meta">The test suite\'s image tests (tests/{e(folder)}), with their verdicts: '
                          f'your render on the left of each slider, the stored reference on the right; beside them, '
-                         f'each 4x4 block\'s difference in standard deviations (red: yours brighter, blue: darker, '
-                         f'black: within noise). Run in {e(s["comparison_note"])}.</p>')
+                         f'each 4x4 block\'s difference in standard deviations, z. Run in '
+                         f'{e(s["comparison_note"])}.</p>' + Z_LEGEND)
             parts.append('<div class="comparisons">' + "".join(comparison_html(c, folder) for c in s["comparisons"])
                          + "</div>")
         else:
@@ -275,14 +289,40 @@ def convergence_html(c, owners) -> str:
             f'against log spp</th><th>code it runs</th></tr>{rows}</table>{summary}')
 
 
+def overview_table(sections) -> str:
+    """Page 1: each task's state at a glance, linked to its section."""
+    rows = []
+    for s in sections:
+        n, owner = s["number"], s["owner"]
+        code = f'<span class="owner-{e(owner)}">{"yours" if owner == "student" else "reference"}</span>'
+        if s["todos"]:
+            code += f', <span class="fail">{len(s["todos"])} TODO{"s" if len(s["todos"]) > 1 else ""} left</span>'
+        verdicts = [c["verdict"] for c in s["comparisons"] if c.get("verdict")]
+        if s["todos"]:
+            images = "not run yet"
+        elif not verdicts:
+            images = e(s["comparison_note"] or "none") if not s["comparisons"] else f'{len(s["comparisons"])} shown'
+        else:
+            passed = sum(1 for v in verdicts if v["pass"])
+            worst = max(verdicts, key=lambda v: v["worst_z"] / v["limit"])
+            images = (f'<span class="{"pass" if passed == len(verdicts) else "fail"}">{passed} of {len(verdicts)} '
+                      f'pass</span>; worst block |z| {worst["worst_z"]:.2f} (limit {worst["limit"]:.2f})')
+        text = s["text"]
+        answers = ("no file" if text["missing"] else "written" if text["written"] else
+                   '<span class="fail">not yet</span>')
+        rows.append(f'<tr><td><a href="#task-{n}">Task {n}: {e(title_of(s["folder"]))}</a></td><td>{code}</td>'
+                    f'<td>{images}</td><td>{answers}</td></tr>')
+    return ('<table class="overview"><tr><th>task</th><th>code</th><th>image tests</th><th>your answers</th></tr>'
+            + "".join(rows) + '<tr><td colspan="4"><a href="#convergence">Convergence and speed</a></td></tr>'
+            '</table>')
+
+
 def page(sections, converge, owners, meta) -> str:
     code = ", ".join(f'{n}: <span class="owner-{e(who)}">{"yours" if who == "student" else e(who)}</span>'
                      for n, who in sorted(owners.items()))
     undone = [s["number"] for s in sections if s["todos"]]
     status = (f"{len(sections) - len(undone)} of {len(sections)} tasks done" +
               (f" (not yet: {', '.join(map(str, undone))})" if undone else ""))
-    nav = "".join(f'<li><a href="#task-{s["number"]}">Task {s["number"]}: {e(title_of(s["folder"]))}</a></li>'
-                  for s in sections)
     return f"""<!DOCTYPE html>
 <html lang="en">
 <head>
@@ -297,7 +337,7 @@ def page(sections, converge, owners, meta) -> str:
 <p class="meta">Made {e(meta["date"])} by <code>{e(TOOL)}</code> from <code>{e(meta["build"])}</code>
 (<code>{e(meta["program"])}</code>) in {meta["seconds"]:.0f} s. {e(status)}.</p>
 <p class="meta">Code linked, per task: {code}.</p>
-<nav><ol>{nav}<li><a href="#convergence">Convergence and speed</a></li></ol></nav>
+{overview_table(sections)}
 </header>
 <main>
 {"".join(section_html(s) for s in sections)}

@@ -76,8 +76,9 @@ def check(ci_run, doc, run_function=True):
         problems.append(f"with {NEW_TASKS} new tasks the shares would add up to {grown} s, over {WITH_TASKS_8_TO_12} s")
     if run_function:
         function = stage_function(ci_run)
-        within, over = run_stage(function, 2, 2), run_stage(function, 1, 2)  # 2 s of 2 s; 2 s of 1 s (> 1.5 s)
-        if within.returncode != 0 or "STAGE-PASSED" not in within.stdout or "2 s of its share 2 s" not in within.stdout:
+        within, over = run_stage(function, 1, 0), run_stage(function, 1, 2)  # 0 s of 1 s; 2 s of 1 s (> 1.5 s)
+        if within.returncode != 0 or "STAGE-PASSED" not in within.stdout or \
+                not re.search(r"[01] s of its share 1 s", within.stdout):
             problems.append(f"a stage within its share did not pass with its time printed: {within.stdout[-300:]}")
         if over.returncode == 0 or "STAGE-PASSED" in over.stdout or "over one and a half times" not in over.stderr:
             problems.append(f"a stage over 1.5 times its share did not fail: {over.stdout[-300:]} {over.stderr[-300:]}")
@@ -103,7 +104,9 @@ def main():
                                                                         r"\g<1>999", doc)),
             "no failure over 1.5 times the share": (ci_run.replace("2 * took > 3 * share", "2 * took > 30 * share"), doc),
         }
-        missed = [name for name, (c, d) in altered.items() if (c, d) == (ci_run, doc) or not check(c, d)]
+        # The stage timer is run again only where it was altered (its runs sleep).
+        missed = [name for name, (c, d) in altered.items()
+                  if (c, d) == (ci_run, doc) or not check(c, d, stage_function(c) != stage_function(ci_run))]
         for name in missed:
             print(f"self-test: not caught (or not applied): {name}")
         print(f"ci-budget self-test: {len(altered) - len(missed)} of {len(altered)} alterations caught")

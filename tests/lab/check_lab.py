@@ -20,12 +20,15 @@ REJECTED under all three.
 3. Every case of CASES: the pathlab-lab program linked with that task file
    (TESTS_BUILD_DIR/pathlab-lab-KIND-NN-name-FILE; KIND tasks: the stub)
    gives the verdict listed, without crashing.
-4. Bad input (an unknown warp, an unknown or out-of-range parameter; a map
+4. What a user sees first: every warp with every default (no --set) on the
+   reference is ACCEPTED with p >= 0.05, clear of the rejection tail.
+5. Bad input (an unknown warp, an unknown or out-of-range parameter; a map
    for a warp that reads none, missing or black): a message and exit code 1.
 Fixed seeds, so the test itself cannot flake; the lab's rate of rejecting a
 correct warp, measured over many seeds, is in docs/debugger.md."""
 import csv
 import io
+import re
 import subprocess
 import sys
 import tempfile
@@ -70,6 +73,9 @@ def lab(program, warp, *settings, figure=None):
 
 
 SEEDS = (1, 2, 3)
+# The reference with every default must not sit in the test's tail: p at
+# least this (the defaults' seed was chosen for it: apps/demo/lab.cpp).
+DEFAULTS_LEAST_P = 0.05
 
 
 def verdicts(program, warp, *settings):
@@ -97,6 +103,12 @@ def main() -> int:
             print(f"  reference {warp}: {' '.join(seen)}")
             if not judged("accept", seen):
                 failures.append(f"reference {warp}: {seen}\n{out}")
+            # What a user sees first: every default shows the reference ACCEPTED, clear of the tail.
+            code, verdict, out = lab(pathlab, warp)
+            p = re.search(r"p = ([0-9.e+-]+)", out)
+            if code != 0 or verdict != "ACCEPTED" or (p and float(p.group(1)) < DEFAULTS_LEAST_P):
+                failures.append(f"reference {warp} with every default: {verdict}, p {p and p.group(1)} "
+                                f"(want ACCEPTED, p >= {DEFAULTS_LEAST_P}):\n{out}")
             figure, table = Path(temp) / f"{warp}.png", Path(temp) / f"{warp}.csv"
             run = subprocess.run([str(pathlab), "lab", warp, "-o", str(figure), "--csv", str(table),
                                   "--set", "samples=20000"], capture_output=True, text=True, timeout=300)

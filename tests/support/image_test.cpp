@@ -196,14 +196,17 @@ float exposureOf(const Image& reference) {
   return p90 > 0.0f && std::isfinite(p90) ? 0.8f / p90 : 1.0f;
 }
 
-// Red where yours is brighter, blue where darker; full colour at the limit.
+// Red where yours is brighter, blue where darker. Within noise (|z| up to
+// the limit) the colour rises as (|z| / limit)^2 to 40 %, so the usual
+// |z| of 1 or 2 stays near black; past the limit it is full.
 Image zScoreMap(const Verdict& v, int width, int height) {
   Image map(width, height);
   const int blocksX = (width + kBlock - 1) / kBlock;
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const float z = v.blockZ[size_t(y / kBlock) * size_t(blocksX) + size_t(x / kBlock)];
-      const float strength = std::min(1.0f, std::abs(z) / float(v.limit));
+      const float ratio = std::abs(z) / float(v.limit);
+      const float strength = ratio > 1.0f ? 1.0f : 0.4f * ratio * ratio;
       map.at(x, y) = z > 0 ? Color(strength, 0.0f, 0.0f) : Color(0.0f, 0.0f, strength);
     }
   }
@@ -227,7 +230,7 @@ std::string writeFailureImages(const ImageCase& c, const PixelMoments& yours, co
     return std::string("(could not write the pictures: ") + e.what() + ")";
   }
   return "pictures: " + stem + "-yours.png, " + stem + "-reference.png, " + stem +
-         "-z.png (red: yours brighter, blue: darker, full colour = significant)";
+         "-z.png (red: yours brighter, blue: darker; black to dim: within noise, full colour: past the limit)";
 }
 
 std::string describe(const Comparison& c) {

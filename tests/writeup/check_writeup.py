@@ -17,10 +17,10 @@ rest). For each:
    comparison's slider with the mouse moves the boundary between the two
    renders. A screenshot of the top of the page is written (--screenshots:
    the docs' pictures).
-3. The PDF (Chromium's print-to-PDF): each task's section starts a page,
-   in order, with the convergence section last (pdftotext per page); it has
-   as many pages as sections plus the title's, at least; and it holds at
-   least as many images as the page has (pdfimages)."""
+3. The PDF (Chromium's print-to-PDF): page 1 holds the title, the overview
+   (a row per task) and the start of the first task; each later section
+   starts a page, in order, with the convergence section last (pdftotext per
+   page); and it holds at least as many images as the page has (pdfimages)."""
 import argparse
 import base64
 import fcntl
@@ -255,21 +255,32 @@ def check_page(name, page: Path, pdf: Path, browser: Chromium, expect_done, expe
 
     info = subprocess.run(["pdfinfo", str(pdf)], capture_output=True, text=True)
     pages = int(re.search(r"Pages:\s+(\d+)", info.stdout).group(1)) if info.returncode == 0 else 0
-    if pages < len(sections) + 2:
-        fail(f"the PDF has {pages} pages; want at least {len(sections) + 2} (a title page, one per task, convergence)")
-    starts = []
+    if pages < len(sections) + 1:
+        fail(f"the PDF has {pages} pages; want at least {len(sections) + 1} (one per task, convergence)")
+    starts, page_one = [], ""
     for p in range(1, pages + 1):
-        first = subprocess.run(["pdftotext", "-f", str(p), "-l", str(p), "-layout", str(pdf), "-"],
-                               capture_output=True, text=True).stdout.strip().splitlines()
+        text = subprocess.run(["pdftotext", "-f", str(p), "-l", str(p), "-layout", str(pdf), "-"],
+                              capture_output=True, text=True).stdout
+        page_one = page_one or text
+        first = text.strip().splitlines()
         head = first[0].strip() if first else ""
+        if p == 1:
+            continue
         m = re.match(r"Task (\d+):", head)
         if m:
             starts.append(int(m.group(1)))
         elif head.startswith("Convergence and speed"):
             starts.append("convergence")
-    want = [int(n) for n, _ in sections] + ["convergence"]
+    want = [int(n) for n, _ in sections][1:] + ["convergence"]
     if starts != want:
-        fail(f"the PDF's pages start with {starts}; want each section on a new page, in order: {want}")
+        fail(f"the PDF's pages after the first start with {starts}; want each later section on a new page, in "
+             f"order: {want}")
+    # Page 1: the title, the overview (a row per task) and the first task's own start, not a title alone.
+    rows = [n for n, _ in sections if re.search(rf"Task {n}:", page_one)]
+    if not (page_one.lstrip().startswith("PathLab write-up") and rows == [n for n, _ in sections]
+            and len(re.findall(rf"Task {sections[0][0]}:", page_one)) >= 2 and "Code:" in page_one):
+        fail(f"page 1 should hold the title, the overview of every task and the start of task {sections[0][0]}; "
+             f"it reads: {' '.join(page_one.split())[:400]!r}")
     listed = subprocess.run(["pdfimages", "-list", str(pdf)], capture_output=True, text=True).stdout.splitlines()[2:]
     if len(listed) < len(parsed.images):
         fail(f"the PDF holds {len(listed)} images; the page shows {len(parsed.images)}")
