@@ -17,9 +17,55 @@ SANDBOX_UID = int(os.environ.get("PATHLAB_SANDBOX_UID", "64990"))  # a uid nothi
 CANDIDATE_LIMITS = ["--nofile=256", "--fsize=67108864", "--core=0"]
 ADDRESS_SPACE = "--as=8589934592"  # 8 GB; not under sanitizers, whose shadow memory reserves terabytes
 CANDIDATE_PROCESSES = 64     # RLIMIT_NPROC of the sandbox uid: a fork bomb stops here
-# Memory of all the sandbox's processes together (resident, System V segments
-# included): one submission's, whatever it forks. PATHLAB_SANDBOX_MEMORY for a course's own.
-SUBMISSION_MEMORY = int(os.environ.get("PATHLAB_SANDBOX_MEMORY", str(8 << 30)))
+GRADER_MEMORY = 256 << 20    # what the grader, its judge and the page cache they need keep for themselves
+
+
+def container_memory_limit():
+    """The tightest memory limit on this process, in bytes: cgroup v2's
+    memory.max of its cgroup and every parent, or cgroup v1's
+    memory.limit_in_bytes; None when nothing limits it (Gradescope's
+    container is such a cgroup: 768 MB by default)."""
+    try:
+        lines = Path("/proc/self/cgroup").read_text().splitlines()
+    except OSError:
+        return None
+    limits = []
+    for line in lines:
+        hierarchy, controllers, path = (line.split(":", 2) + ["", ""])[:3]
+        if hierarchy == "0" and not controllers:
+            base, files = Path("/sys/fs/cgroup"), ["memory.max"]
+        elif "memory" in controllers.split(","):
+            base, files = Path("/sys/fs/cgroup/memory"), ["memory.limit_in_bytes"]
+        else:
+            continue
+        group = Path("/") / path.lstrip("/")
+        while True:  # the group and its parents (inside a container, "/" is the container's own)
+            for name in files:
+                try:
+                    value = (base / str(group).lstrip("/") / name).read_text().strip()
+                    if value.isdigit() and int(value) < 1 << 60:
+                        limits.append(int(value))
+                except OSError:
+                    pass
+            if group == group.parent:
+                break
+            group = group.parent
+    return min(limits) if limits else None
+
+
+def submission_memory():
+    """Memory of all the sandbox's processes together (resident, System V and
+    RAM-backed files included): one submission's, whatever it forks. 8 GB, or
+    the container's limit less GRADER_MEMORY where that is less, so that a
+    submission is stopped by the grader (and loses its own tests) before the
+    container runs out. PATHLAB_SANDBOX_MEMORY for a course's own."""
+    if "PATHLAB_SANDBOX_MEMORY" in os.environ:
+        return int(os.environ["PATHLAB_SANDBOX_MEMORY"])
+    limit = container_memory_limit()
+    return min(8 << 30, max(64 << 20, limit - GRADER_MEMORY)) if limit else 8 << 30
+
+
+SUBMISSION_MEMORY = submission_memory()
 SHM_BYTES = 16 << 20         # bubblewrap's /dev/shm (its /tmp: Sandbox.command's tmp_bytes)
 OUTPUT_KEPT = 1 << 20        # bytes of a command's output run() holds from each end
 
@@ -158,6 +204,11 @@ class Sandbox:
         if mode in ("bwrap", "uid") and self.root:
             limits.append(f"--nproc={CANDIDATE_PROCESSES}")
         prefix = limits + ["--"]
+        if shutil.which("choom"):
+            # When the container runs out of memory, the kernel kills the
+            # submission's processes first, never the grader or the judge
+            # (tools/grade lowers its own score: protect_grader_from_oom).
+            prefix = ["choom", "-n", "1000", "--"] + prefix
         if self.root and mode in ("bwrap", "uid"):
             prefix += ["setpriv", f"--reuid={SANDBOX_UID}", f"--regid={SANDBOX_UID}", "--clear-groups",
                        "--inh-caps=-all", "--bounding-set=-all", "--no-new-privs", "--"]
@@ -379,16 +430,92 @@ def remove_ipc_objects() -> None:
 
 def sandbox_memory() -> int:
     """Bytes the sandbox uid holds in memory now: its processes' resident
-    pages and its System V shared memory."""
+    pages, its System V shared memory (in our IPC namespace, and in each
+    namespace of its own that bubblewrap made), and the files in the RAM-backed
+    /tmp and /dev/shm of each mount namespace of its own."""
     page = os.sysconf("SC_PAGE_SIZE")
     total = 0
+    ipc_namespaces, mount_namespaces = {}, {}
+    own_ipc, own_mnt = namespace("self", "ipc"), namespace("self", "mnt")
     for pid in sandbox_processes():
         try:
             with open(f"/proc/{pid}/statm", "rb") as f:
                 total += int(f.read().split()[1]) * page
         except (OSError, IndexError, ValueError):
+            continue
+        ipc, mnt = namespace(pid, "ipc"), namespace(pid, "mnt")
+        if ipc and ipc != own_ipc:
+            ipc_namespaces.setdefault(ipc, pid)
+        if mnt and mnt != own_mnt:
+            mount_namespaces.setdefault(mnt, pid)
+    total += sum(rss for _, _, rss in ipc_objects())
+    total += sum(shared_memory_in_namespace(pid) for pid in ipc_namespaces.values())
+    for pid in mount_namespaces.values():
+        for folder in ram_folders(pid):
+            try:
+                fs = os.statvfs(f"/proc/{pid}/root{folder}")
+                total += (fs.f_blocks - fs.f_bfree) * fs.f_frsize
+            except OSError:
+                pass
+    return total
+
+
+def ram_folders(pid: int):
+    """/tmp and /dev/shm where they are RAM-backed (tmpfs) in the mount namespace of `pid`."""
+    try:
+        mounts = Path(f"/proc/{pid}/mounts").read_text().splitlines()
+    except OSError:
+        return []
+    found = {fields[1] for fields in (line.split() for line in mounts)
+             if len(fields) > 2 and fields[2] == "tmpfs" and fields[1] in ("/tmp", "/dev/shm")}
+    return sorted(found)
+
+
+def namespace(pid, kind: str) -> str:
+    try:
+        return os.readlink(f"/proc/{pid}/ns/{kind}")
+    except OSError:
+        return ""
+
+
+def shared_memory_in_namespace(pid: int) -> int:
+    """Resident bytes of the System V segments in the IPC namespace of `pid`:
+    read by a child that joins that namespace (/proc/sysvipc shows the
+    reader's own)."""
+    if not hasattr(os, "setns"):
+        return 0
+    read, write = os.pipe()
+    child = os.fork()
+    if child == 0:
+        total = 0
+        try:
+            os.close(read)
+            fd = os.open(f"/proc/{pid}/ns/ipc", os.O_RDONLY)
+            os.setns(fd, os.CLONE_NEWIPC)
+            lines = Path("/proc/sysvipc/shm").read_text().splitlines()
+            columns = lines[0].split() if lines else []
+            for line in lines[1:]:
+                total += int(dict(zip(columns, line.split())).get("rss", 0))
+        except (OSError, ValueError):
             pass
-    return total + sum(rss for _, _, rss in ipc_objects())
+        finally:
+            os.write(write, str(total).encode())
+            os._exit(0)
+    os.close(write)
+    with os.fdopen(read) as f:
+        text = f.read()
+    os.waitpid(child, 0)
+    return int(text) if text.isdigit() else 0
+
+
+def protect_grader_from_oom() -> None:
+    """The grader and what it starts outside the sandbox (the judge) are never
+    the kernel's choice when memory runs out (the sandbox's processes are, at
+    +1000). Needs root; elsewhere the scores stay as they are."""
+    try:
+        Path("/proc/self/oom_score_adj").write_text("-1000")
+    except OSError:
+        pass
 
 
 class MemoryWatch:
@@ -396,7 +523,8 @@ class MemoryWatch:
     sandbox's processes together; over SUBMISSION_MEMORY, every one is killed
     and `exceeded` holds what was seen. (RLIMIT_AS bounds one process; this
     bounds the submission. A poll, not a cgroup — Gradescope's container
-    offers none — so a burst can overshoot by what 50 ms of writing adds.)"""
+    offers none — so a burst can overshoot by what 50 ms of writing adds:
+    the room GRADER_MEMORY leaves, and the OOM scores, cover that.)"""
 
     def __init__(self, active: bool, limit: int = SUBMISSION_MEMORY):
         self.active, self.limit = active, limit

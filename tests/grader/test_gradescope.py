@@ -166,7 +166,8 @@ def main() -> int:
         subprocess.run(["bash", str(root / "tools/gradescope/make-zip.sh"), str(archive)], check=True,
                        stdout=subprocess.DEVNULL, timeout=300)
         names = set(zipfile.ZipFile(archive).namelist())
-        for required in ("setup.sh", "run_autograder", "source/CMakeLists.txt", "source/tools/grade"):
+        for required in ("setup.sh", "run_autograder", "gradescope-timeout", "source/CMakeLists.txt",
+                         "source/tools/grade"):
             if required not in names:
                 failures.append(f"the zip has no {required}")
         print(f"zip: {archive.stat().st_size >> 20} MB, {len(names)} entries")

@@ -1,9 +1,22 @@
 #!/usr/bin/env bash
 # Packs the Gradescope autograder: setup.sh and run_autograder at the zip's
 # root, the repository (tracked files, without build folders) in source/.
-#   tools/gradescope/make-zip.sh OUT.zip
+#   tools/gradescope/make-zip.sh OUT.zip [--timeout SECONDS]
+# --timeout: the autograder timeout set on Gradescope (default 600, its own
+# default). Gradescope does not tell the container, so the zip carries it
+# (gradescope-timeout) and run_autograder ends the grade in time to write
+# results.json before it (docs/ta-guide.md).
 set -euo pipefail
-out=$(realpath "${1:?usage: make-zip.sh OUT.zip}")
+usage="usage: make-zip.sh OUT.zip [--timeout SECONDS]"
+out=$(realpath "${1:?$usage}"); shift
+timeout=600
+while (($#)); do
+  case $1 in
+    --timeout) timeout=${2:?$usage}; shift 2 ;;
+    *) echo "$usage" >&2; exit 2 ;;
+  esac
+done
+[[ $timeout =~ ^[0-9]+$ ]] && ((timeout >= 180)) || { echo "make-zip.sh: --timeout must be at least 180 seconds, got $timeout" >&2; exit 2; }
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 stage=$(mktemp -d)
@@ -11,6 +24,7 @@ trap 'rm -rf "$stage"' EXIT
 mkdir -p "$stage/source"
 git -C "$root" archive HEAD | tar -x -C "$stage/source"
 cp "$here/setup.sh" "$here/run_autograder" "$stage/"
+echo "$timeout" > "$stage/gradescope-timeout"
 chmod +x "$stage/setup.sh" "$stage/run_autograder"
-(cd "$stage" && rm -f "$out" && python3 -m zipfile -c "$out" setup.sh run_autograder source)
-echo "wrote $out"
+(cd "$stage" && rm -f "$out" && python3 -m zipfile -c "$out" setup.sh run_autograder gradescope-timeout source)
+echo "wrote $out (for a Gradescope timeout of $timeout s)"

@@ -18,6 +18,8 @@ if [ "${PATHLAB_SKIP_APT:-}" = 1 ]; then
 else
   install_packages "${pathlab_grading[@]}"
 fi
+# Ubuntu 22.04 (Gradescope's default image) has CMake 3.22: a newer one from PyPI.
+source "$autograder/source/source/tools/gradescope/ensure-cmake.sh"
 # Build the framework and the reference once; grading rebuilds only the student's files.
 cd "$autograder/source/source"
 # Build the judges once (tools/grade configures build-grade the same way);
