@@ -468,6 +468,8 @@ bool App::runCommand(const ScriptCommand& command) {
     }
   } else if (verb == "lab-map") {
     lab_.setEnvironmentMap(command.args[0]);
+  } else if (verb == "lab-verdict") {
+    std::printf(" -> %s", lab_.verdict().c_str());
   } else if (verb == "view") {
     const std::vector<const DebugView*> panelViews = viewsOfTask(selectedTab_);
     auto found = std::find_if(panelViews.begin(), panelViews.end(),

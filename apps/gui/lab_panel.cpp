@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <sstream>
 
 #include "parameter_sliders.h"
 #include "util/error.h"
@@ -34,6 +35,16 @@ bool LabPanel::select(const std::string& name) {
   values_.clear();
   recompute();
   return true;
+}
+
+std::string LabPanel::verdict() const {
+  if (!hasResult_) return warp_->name + ": no result yet";
+  if (!shown_.error.empty()) return warp_->name + ": " + shown_.error;
+  const lab::LabResult& r = shown_.result;
+  std::ostringstream line;
+  line << warp_->name << ": " << (r.accepted ? "ACCEPTED" : "REJECTED");
+  if (r.test.failure.empty() && r.test.degreesOfFreedom > 0) line << ", p = " << r.test.pValue;
+  return line.str();
 }
 
 void LabPanel::setEnvironmentMap(const std::string& path) {

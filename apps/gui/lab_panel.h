@@ -24,6 +24,8 @@ class LabPanel {
   bool set(const std::string& name, double value);
   // Script: the environment warp on the user's own map (empty: the built-in maps).
   void setEnvironmentMap(const std::string& path);
+  // Script: what the tab shows now, as a line: "annulus: ACCEPTED, p = 0.824".
+  std::string verdict() const;
 
  private:
   struct Job {

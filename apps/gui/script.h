@@ -12,6 +12,7 @@
 //   lab environment    show the sampling lab's tab, on that warp
 //   lab-set map 3      set one of the warp's parameters
 //   lab-map F.exr      the environment warp on a map file
+//   lab-verdict        prints what the lab shows: "WARP: ACCEPTED, p = ..." (after wait-panel)
 //   wait-panel         until the panel's view (or the lab's test) is computed
 //   screenshot F.png   save the window
 //   quit

@@ -93,11 +93,19 @@ lab-map ROOT/no-such-map.exr
 wait-panel
 quit
 SCRIPT
+# First, every warp of the lab with every default, as a user first sees it: ACCEPTED.
+warps=$("$build/pathlab" lab --list | awk '{print $1}')
+{ for warp in $warps; do printf 'lab %s\nwait-panel\nlab-verdict\n' "$warp"; done; cat "$out/session.txt"; } \
+  > "$out/session.all" && mv "$out/session.all" "$out/session.txt"
 sed -i "s|OUT|$out|g; s|ROOT|$root|g" "$out/session.txt"
 if ! xrun "$gui" --script "$out/session.txt" --timeout 300 > "$out/session.log" 2> "$out/session.err"; then
   fail "scripted session exited with $?"; cat "$out/session.err"
 fi
 grep -q "click 140 200 -> pixel 140,200: 16 samples" "$out/session.log" || fail "the click was not inspected"
+for warp in $warps; do
+  grep -q "script: lab-verdict -> $warp: ACCEPTED" "$out/session.log" ||
+    fail "the lab tab with every default does not show $warp ACCEPTED: $(grep "lab-verdict -> $warp:" "$out/session.log")"
+done
 grep -q "no-such-map.exr: cannot open" "$out/session.err" || fail "a missing map file in the lab was not reported"
 for f in panel1 paths-front paths-side lab lab-mistake lab-map; do
   [[ -s $out/$f.png ]] || { fail "no screenshot $f.png"; continue; }
