@@ -261,14 +261,19 @@ TEST_CASE("T2.3 triangle surface point: vertex normals are interpolated and deci
 
 TEST_CASE("T2.4 sphere surface point: on the sphere, with the outward unit normal" *
           grading(2, "normal = normalize(ray.at(t) - center), outward even when the ray starts inside; "
-                     "re-project the point onto the sphere: center + radius * normal")) {
+                     "re-project the point onto the sphere: center + radius * normal (from far away, ray.at(t) "
+                     "misses the surface by t times the float rounding)")) {
   Random random(42);
-  for (int i = 0; i < 500; ++i) {
+  // 500 rays from near the sphere (half from inside), then 200 from 1e3 to
+  // 1e4 away: there o + t d lands off the surface by ~t * 6e-8, far more
+  // than the re-projected point's rounding.
+  for (int i = 0; i < 700; ++i) {
     Point3 center(random.inCube(100));
     float radius = float(random.uniform(0.01, 10.0));
-    bool fromInside = i % 2 == 0;
+    bool fromInside = i < 500 && i % 2 == 0;
+    const double distance = i < 500 ? radius * 3.0 : random.uniform(1e3, 1e4);
     Ray ray = fromInside ? Ray{Point3(DVec3(center) + random.unitVector() * (0.5 * radius)), Vec3(random.unitVector())}
-                         : rayPastSphere(random, center, radius, radius * 3.0, random.uniform(0, 0.9));
+                         : rayPastSphere(random, center, radius, distance, random.uniform(0, 0.9));
     double t = sphereOracle(ray, center, radius);
     REQUIRE(t > 0);
     SurfacePoint s = candidate::sphereSurfacePoint(ray, float(t), center, radius);

@@ -53,6 +53,8 @@ MUTANTS = [
      [("if (range.contains(t0)) return t0;", "if (t0 < range.max) return t0;")]),
     (2, "unnormalised-sphere-normal", "the sphere normal not normalised",
      [("const Vec3 outward = glm::normalize(ray.at(t) - center);", "const Vec3 outward = ray.at(t) - center;")]),
+    (2, "sphere-not-reprojected", "the sphere's hit point left at o + t d, not re-projected (off the surface from afar)",
+     [("s.point = center + radius * outward;  // re-project onto the sphere", "s.point = ray.at(t);")]),
     (2, "flips-shading-normal", "the shading normal flipped instead of the geometric one",
      [("if (glm::dot(s.geometricNormal, s.shadingNormal) < 0.0f) s.geometricNormal = -s.geometricNormal;",
        "if (glm::dot(s.geometricNormal, s.shadingNormal) < 0.0f) s.shadingNormal = -s.shadingNormal;")]),
