@@ -205,6 +205,9 @@ ALTERNATES = [
        "  const glm::dvec3 fd = glm::dvec3(ray.origin) - glm::dvec3(center), dd(ray.direction);\n  const double ad = glm::dot(dd, dd), hb = glm::dot(fd, dd), cd = glm::dot(fd, fd) - double(radius) * radius;\n  const Vec3 f(fd);\n  const Vec3& d = ray.direction;\n  const float a = float(ad), halfB = float(hb), c = float(cd);")]),
     (3, "eight-bins", "SAH with 8 bins", [("constexpr int kBins = 16;", "constexpr int kBins = 8;")]),
     (3, "thirty-two-bins", "SAH with 32 bins", [("constexpr int kBins = 16;", "constexpr int kBins = 32;")]),
+    (3, "longest-axis-only", "SAH along the centroids' longest axis only (Wald 2007 bins one axis)",
+     [("      if (!(extent[axis] > 0.0f)) continue;  // all centroids equal along this axis",
+       "      if (!(extent[axis] > 0.0f) || axis != centroidBounds.largestAxis()) continue;  // the longest axis only")]),
     (3, "unordered-traversal", "closest hit without visiting the nearer child first",
      [("        if (*tFar < *tNear) std::swap(near, far), std::swap(tNear, tFar);", "")]
      if False else [("      if (tFar < tNear) std::swap(near, far), std::swap(tNear, tFar);\n", "      if (tNear == kInfinity) std::swap(near, far), std::swap(tNear, tFar);\n")]),
