@@ -404,19 +404,22 @@ def kill_every_process_of_sandbox() -> None:
         time.sleep(0.01)  # processes in the kernel finish dying
 
 
+def sysvipc(kind: str):
+    """The System V objects of one kind ("shm", "sem", "msg") in this process's
+    IPC namespace, each a {column: value} of /proc/sysvipc/KIND."""
+    try:
+        lines = Path(f"/proc/sysvipc/{kind}").read_text().splitlines()
+    except OSError:
+        return []
+    columns = lines[0].split() if lines else []
+    return [dict(zip(columns, line.split())) for line in lines[1:]]
+
+
 def ipc_objects():
     """(kind flag for ipcrm, id, resident bytes) of the sandbox uid's System V objects."""
     found = []
     for kind, flag in (("shm", "-m"), ("sem", "-s"), ("msg", "-q")):
-        try:
-            lines = Path(f"/proc/sysvipc/{kind}").read_text().splitlines()
-        except OSError:
-            continue
-        if not lines:
-            continue
-        columns = lines[0].split()
-        for line in lines[1:]:
-            fields = dict(zip(columns, line.split()))
+        for fields in sysvipc(kind):
             if fields.get("uid") == str(SANDBOX_UID) or fields.get("cuid") == str(SANDBOX_UID):
                 found.append((flag, fields.get("shmid") or fields.get("semid") or fields.get("msqid"),
                               int(fields.get("rss", 0))))
@@ -492,10 +495,7 @@ def shared_memory_in_namespace(pid: int) -> int:
             os.close(read)
             fd = os.open(f"/proc/{pid}/ns/ipc", os.O_RDONLY)
             os.setns(fd, os.CLONE_NEWIPC)
-            lines = Path("/proc/sysvipc/shm").read_text().splitlines()
-            columns = lines[0].split() if lines else []
-            for line in lines[1:]:
-                total += int(dict(zip(columns, line.split())).get("rss", 0))
+            total = sum(int(fields.get("rss", 0)) for fields in sysvipc("shm"))
         except (OSError, ValueError):
             pass
         finally:
