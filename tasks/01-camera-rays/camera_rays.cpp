@@ -45,11 +45,12 @@ Point2 pixelSamplePosition(IVec2 pixel, Vec2 u) {
 //   up'     = right x forward          (unit: right and forward are orthonormal)
 //
 // camera.up only says which way is "up" on the image; it need not be
-// perpendicular to forward, so re-orthogonalise as above.
+// perpendicular to forward, so re-orthogonalise as above. Nor need it be a
+// unit vector (an up 1e-6 long is as good as any): normalise it first.
 //
 // PITFALL: when camera.up is parallel to forward (looking straight down with
 // up = +y), forward x up is the zero vector and normalize() returns NaN.
-// Detect it (|forward x up| tiny) and use any other vector perpendicular to
+// Detect it (|forward x unit up| tiny) and use any other vector perpendicular to
 // forward instead; the tests accept any orthonormal frame in that case.
 CameraBasis cameraBasis(const Camera& camera) {
   // TODO(T1.2): build forward, right, up as described above.

@@ -132,7 +132,8 @@ TEST_CASE("T1.1 pixel sample: u spreads samples uniformly over the whole pixel" 
 
 TEST_CASE("T1.2 camera basis: orthonormal, right-handed, forward points at lookAt" *
           grading(3, "forward = normalize(lookAt - position); right = normalize(cross(forward, up)); "
-                     "up = cross(right, forward) — normalise, and mind the order of the cross products")) {
+                     "up = cross(right, forward) — normalise, and mind the order of the cross products; camera.up "
+                     "may have any length: normalise it before judging the cross product's size")) {
   for (const Camera& camera : someCameras()) {
     CameraBasis b = candidate::cameraBasis(camera);
     checkOrthonormal(b);
@@ -142,6 +143,17 @@ TEST_CASE("T1.2 camera basis: orthonormal, right-handed, forward points at lookA
     // The image's up agrees with the requested up, and the horizon is level.
     CHECK(glm::dot(b.up, camera.up) > 0.0f);
     CHECK(std::abs(glm::dot(b.right, glm::normalize(camera.up))) < 1e-5f);
+    // up gives a direction, whatever its length.
+    for (float length : {1e-6f, 1e6f}) {
+      Camera scaled = camera;
+      scaled.up = camera.up * length;
+      CAPTURE(length);
+      const CameraBasis s = candidate::cameraBasis(scaled);
+      INFO("up scaled by " << length << ": right " << str(s.right) << " up " << str(s.up) << "; at length 1: right "
+                           << str(b.right) << " up " << str(b.up));
+      CHECK(near(s.right, b.right, 1e-5f));
+      CHECK(near(s.up, b.up, 1e-5f));
+    }
   }
 }
 

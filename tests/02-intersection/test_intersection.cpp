@@ -97,24 +97,53 @@ TEST_CASE("T2.1 triangle: a ray through the interior hits with the right t and b
 
 TEST_CASE("T2.1 triangle: rays beside the edges, behind the origin or outside the range miss" *
           grading(3, "reject mixed-sign edge functions; accept only range.min < t < range.max "
-                     "(compare tScaled with range * det, minding the sign of det)")) {
-  const Point3 p0{0, 0, 0}, p1{1, 0, 0}, p2{0, 1, 0};
-  const Vec3 down{0, 0, -1};
-  // Inside, as a control: this one must hit.
-  REQUIRE(candidate::intersectTriangle(Ray{{0.2f, 0.2f, 1}, down}, kAll, p0, p1, p2).has_value());
-  // Beside each of the three edges.
-  CHECK_FALSE(candidate::intersectTriangle(Ray{{0.2f, -0.01f, 1}, down}, kAll, p0, p1, p2).has_value());
-  CHECK_FALSE(candidate::intersectTriangle(Ray{{-0.01f, 0.2f, 1}, down}, kAll, p0, p1, p2).has_value());
-  CHECK_FALSE(candidate::intersectTriangle(Ray{{0.51f, 0.51f, 1}, down}, kAll, p0, p1, p2).has_value());
-  // Behind the origin: the triangle is at t = -1.
-  CHECK_FALSE(candidate::intersectTriangle(Ray{{0.2f, 0.2f, -1}, down}, kAll, p0, p1, p2).has_value());
-  // Range: the hit is at t = 1.
-  CHECK_FALSE(candidate::intersectTriangle(Ray{{0.2f, 0.2f, 1}, down}, {0.0f, 0.999f}, p0, p1, p2).has_value());
-  CHECK_FALSE(candidate::intersectTriangle(Ray{{0.2f, 0.2f, 1}, down}, {1.001f, kInfinity}, p0, p1, p2).has_value());
-  CHECK(candidate::intersectTriangle(Ray{{0.2f, 0.2f, 1}, down}, {0.999f, 1.001f}, p0, p1, p2).has_value());
-  // From below (seen from the back side) the same range rules apply.
-  CHECK(candidate::intersectTriangle(Ray{{0.2f, 0.2f, -1}, {0, 0, 1}}, kAll, p0, p1, p2).has_value());
-  CHECK_FALSE(candidate::intersectTriangle(Ray{{0.2f, 0.2f, -1}, {0, 0, 1}}, {0.0f, 0.5f}, p0, p1, p2).has_value());
+                     "(compare tScaled with range * det, minding the sign of det) — also for a ray through an "
+                     "edge or a vertex, where an edge function is exactly 0")) {
+  // The same triangle in each of the three axis planes, both windings.
+  for (int axis = 0; axis < 3; ++axis) {
+    for (bool flipped : {false, true}) {
+      auto at = [axis](float x, float y, float z) {  // (x, y, z) with z turned onto `axis`
+        Point3 p;
+        p[(axis + 1) % 3] = x;
+        p[(axis + 2) % 3] = y;
+        p[axis] = z;
+        return p;
+      };
+      const Point3 p0 = at(0, 0, 0), p1 = flipped ? at(0, 1, 0) : at(1, 0, 0), p2 = flipped ? at(1, 0, 0) : at(0, 1, 0);
+      const Vec3 down = at(0, 0, -1), up = at(0, 0, 1);
+      CAPTURE(axis);
+      CAPTURE(flipped);
+      // Inside, as a control: this one must hit.
+      REQUIRE(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, 1), down}, kAll, p0, p1, p2).has_value());
+      // Beside each of the three edges.
+      CHECK_FALSE(candidate::intersectTriangle(Ray{at(0.2f, -0.01f, 1), down}, kAll, p0, p1, p2).has_value());
+      CHECK_FALSE(candidate::intersectTriangle(Ray{at(-0.01f, 0.2f, 1), down}, kAll, p0, p1, p2).has_value());
+      CHECK_FALSE(candidate::intersectTriangle(Ray{at(0.51f, 0.51f, 1), down}, kAll, p0, p1, p2).has_value());
+      // Behind the origin: the triangle is at t = -1.
+      CHECK_FALSE(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, -1), down}, kAll, p0, p1, p2).has_value());
+      // Range: the hit is at t = 1.
+      CHECK_FALSE(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, 1), down}, {0.0f, 0.999f}, p0, p1, p2).has_value());
+      CHECK_FALSE(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, 1), down}, {1.001f, kInfinity}, p0, p1, p2).has_value());
+      CHECK(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, 1), down}, {0.999f, 1.001f}, p0, p1, p2).has_value());
+      // From below (seen from the back side) the same range rules apply.
+      CHECK(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, -1), up}, kAll, p0, p1, p2).has_value());
+      CHECK_FALSE(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, -1), up}, {0.0f, 0.5f}, p0, p1, p2).has_value());
+      // Exactly through an edge or a vertex (an edge function exactly 0):
+      // hitting or missing there is the method's choice, but never outside
+      // the range, and never behind the origin.
+      for (Point2 q : {Point2(0.5f, 0.0f), Point2(0.0f, 0.5f), Point2(0.5f, 0.5f), Point2(0.0f, 0.0f),
+                       Point2(1.0f, 0.0f), Point2(0.0f, 1.0f)}) {
+        CAPTURE(q.x);
+        CAPTURE(q.y);
+        for (Vec3 d : {down, up}) {
+          const Point3 origin = at(q.x, q.y, 0) - d;  // the triangle at t = 1
+          CHECK_FALSE(candidate::intersectTriangle(Ray{origin, d}, {0.0f, 0.5f}, p0, p1, p2).has_value());
+          CHECK_FALSE(candidate::intersectTriangle(Ray{origin, d}, {1.5f, kInfinity}, p0, p1, p2).has_value());
+          CHECK_FALSE(candidate::intersectTriangle(Ray{origin, -d}, kAll, p0, p1, p2).has_value());  // at t = -1
+        }
+      }
+    }
+  }
 }
 
 TEST_CASE("T2.1 triangle: the range is open — t exactly at range.min or range.max misses, from either side" *
@@ -158,14 +187,15 @@ TEST_CASE("T2.1 triangle: the range holds at every scale, from both sides and al
   // permutation that does not put the largest component last divides by ~0.
   std::vector<DVec3> directions;
   for (int axis = 0; axis < 3; ++axis)
-    for (double tiny : {0.0, 1e-7, 1e-20}) {
-      DVec3 d(0.0);
-      d[axis] = 1.0;
-      d[(axis + 1) % 3] = tiny;
-      d[(axis + 2) % 3] = -0.5 * tiny;
-      directions.push_back(d);
-      directions.push_back(-d);
-    }
+    for (double tiny : {0.0, 1e-7, 1e-20})
+      for (int order = 0; order < 2; ++order) {  // either of the other two components the larger
+        DVec3 d(0.0);
+        d[axis] = 1.0;
+        d[(axis + 1 + order) % 3] = tiny;
+        d[(axis + 2 - order) % 3] = -0.5 * tiny;
+        directions.push_back(d);
+        directions.push_back(-d);
+      }
   for (double scale : {1e-3, 1.0, 1e5}) {
     for (int i = 0; i < 240; ++i) {
       Point3 p0(scale * random.inCube(1)), p1(scale * random.inCube(1)), p2(scale * random.inCube(1));

@@ -18,6 +18,9 @@ PATHLAB_REMOTE_CALL(IntersectBox, 1, std::optional<float>(Aabb, Ray, Vec3, Inter
 PATHLAB_REMOTE_CALL(BuildBvh, 2, Bvh(std::vector<Aabb>));
 PATHLAB_REMOTE_CALL(IntersectClosest, 3, std::vector<ClosestResult>(Bvh, Scene, std::vector<RayInRange>));
 PATHLAB_REMOTE_CALL(IntersectAny, 4, std::vector<AnyResult>(Bvh, Scene, std::vector<RayInRange>));
+// The slots each ray's traversal tested, as the leaf geometry records them
+// (the framework's log, not the candidate's own count): closest hit, or any hit.
+PATHLAB_REMOTE_CALL(TestedSlots, 5, std::vector<std::vector<uint32_t>>(Bvh, Scene, std::vector<RayInRange>, bool));
 }  // namespace pathlab::calls
 
 namespace pathlab::candidate {
@@ -45,6 +48,11 @@ inline bool intersectAny(const Bvh& bvh, const Scene& scene, const Ray& ray, Int
   auto [blocked, work] = intersectAny(bvh, scene, {{ray, range}}).at(0);
   if (stats) *stats = work;
   return blocked;
+}
+
+inline std::vector<std::vector<uint32_t>> testedSlots(const Bvh& bvh, const Scene& scene,
+                                                     const std::vector<calls::RayInRange>& rays, bool anyHit) {
+  return remote::call<calls::TestedSlots>(bvh, scene, rays, anyHit);
 }
 
 }  // namespace pathlab::candidate

@@ -31,6 +31,22 @@ void registerCalls(Server& server) {
     }
     return results;
   });
+  server.serve<calls::TestedSlots>(
+      [](const Bvh& bvh, const Scene& scene, const std::vector<calls::RayInRange>& rays, bool anyHit) {
+        LeafGeometry geometry(scene, bvh.primitives, kLinkedTasks.primitives);
+        std::vector<std::vector<uint32_t>> tested(rays.size());
+        for (size_t i = 0; i < rays.size(); ++i) {
+          const auto& [ray, range] = rays[i];
+          geometry.recordTests(&tested[i]);
+          if (anyHit) {
+            intersectAny(bvh, geometry, ray, range, nullptr);
+          } else {
+            intersectClosest(bvh, geometry, ray, range, nullptr);
+          }
+        }
+        geometry.recordTests(nullptr);
+        return tested;
+      });
 }
 
 }  // namespace pathlab::remote

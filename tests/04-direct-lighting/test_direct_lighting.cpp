@@ -86,50 +86,99 @@ TEST_CASE("T4.1 Lambertian BRDF: f = albedo / pi, so the reflected fraction is t
 
 // ---------------------------------------------------------------- T4.2
 
+namespace {
+
+// Rays leaving real hit points of random triangles `scale` across, in every
+// direction, from the candidate's offset origins: how many hit the triangle
+// they leave, and how many origins moved too far. Triangles are scattered
+// over ten times their size, or (`nearOrigin`) pass near the origin and are
+// hit 1e-4..1e-2 from it, where the point's coordinates are far smaller than
+// the rounding error the large vertices put into it.
+struct Leaving {
+  int rays = 0, selfHits = 0, tooFar = 0;
+};
+Leaving leaveTriangles(Random& random, double scale, bool nearOrigin) {
+  struct Ray_ {
+    Point3 p0, p1, p2, point;
+    Vec3 direction;
+  };
+  std::vector<Ray_> leaving;
+  std::vector<calls::OffsetRayOrigin::Args> queries;
+  for (int i = 0; i < 300; ++i) {
+    const DVec3 center = nearOrigin ? random.inCube(1e-3) : random.inCube(scale * 10.0);
+    Point3 p0(center + random.inCube(scale)), p1(center + random.inCube(scale)), p2(center + random.inCube(scale));
+    if (nearOrigin) {  // a triangle around `center`, in a random plane through it
+      const DVec3 normal = random.unitVector(), u = glm::normalize(glm::cross(normal, random.unitVector()));
+      const DVec3 v = glm::cross(normal, u);
+      const double turn = random.uniform(0.0, 2.0 * std::numbers::pi);
+      Point3* corners[] = {&p0, &p1, &p2};
+      for (int k = 0; k < 3; ++k) {
+        const double angle = turn + 2.0 * std::numbers::pi * k / 3.0;
+        *corners[k] = Point3(center + scale * (std::cos(angle) * u + std::sin(angle) * v));
+      }
+    }
+    const DVec3 n = glm::cross(DVec3(p1 - p0), DVec3(p2 - p0));
+    if (glm::length(n) < 0.05 * scale * scale) continue;
+    // A real hit point: a ray onto the triangle's interior.
+    const double b1 = random.uniform(0.1, 0.8), b2 = random.uniform(0.05, 0.9 - b1);
+    DVec3 target = (1 - b1 - b2) * DVec3(p0) + b1 * DVec3(p1) + b2 * DVec3(p2);
+    if (nearOrigin) {  // the plane's point nearest the origin, moved 1e-4..1e-2 along the plane
+      const DVec3 unit = glm::normalize(n);
+      const DVec3 along = glm::normalize(glm::cross(unit, random.unitVector()));
+      target = unit * glm::dot(DVec3(p0), unit) + along * std::pow(10.0, random.uniform(-4.0, -2.0));
+    }
+    const DVec3 from = glm::normalize(glm::normalize(n) * (random.uniform() < 0.5 ? 1.0 : -1.0) + 0.5 * random.unitVector());
+    const Ray in{Point3(target + from * scale), Vec3(-from)};
+    const auto hit = intersectTriangle(in, kAll, p0, p1, p2);
+    if (!hit) continue;
+    const SurfacePoint s = triangleSurfacePoint(*hit, p0, p1, p2, nullptr);
+    for (int k = 0; k < 20; ++k) {
+      // Leave on either side, at any angle, including grazing.
+      const Vec3 direction(random.unitVector());
+      leaving.push_back({p0, p1, p2, s.point, direction});
+      queries.emplace_back(s.point, s.geometricNormal, direction);
+    }
+  }
+  const std::vector<Point3> origins = candidate::offsetRayOrigins(queries);
+  Leaving result;
+  result.rays = int(origins.size());
+  for (size_t i = 0; i < origins.size(); ++i) {
+    const Ray_& l = leaving[i];
+    if (intersectTriangle(Ray{origins[i], l.direction}, kAll, l.p0, l.p1, l.p2)) ++result.selfHits;
+    if (glm::length(DVec3(origins[i]) - DVec3(l.point)) > 1e-3 * glm::length(DVec3(l.point)) + 1e-4) ++result.tooFar;
+  }
+  return result;
+}
+
+}  // namespace
+
 TEST_CASE("T4.2 ray origins: rays leaving a surface never hit it again, at scales 1e-3..1e5" *
           grading(3, "offset the origin along the geometric normal flipped towards the new direction, by a "
                      "number of float ulps (scale-independent), not by a fixed epsilon")) {
   Random random(61);
-  struct Leaving {
-    Point3 p0, p1, p2, point;
-    Vec3 direction;
-  };
-  std::vector<Leaving> leaving;
-  std::vector<calls::OffsetRayOrigin::Args> queries;
+  Leaving all;
   for (double scale : {1e-3, 1.0, 1e2, 1e4, 1e5}) {
-    for (int i = 0; i < 300; ++i) {
-      DVec3 center = random.inCube(scale * 10.0);
-      Point3 p0(center + random.inCube(scale)), p1(center + random.inCube(scale)), p2(center + random.inCube(scale));
-      DVec3 n = glm::cross(DVec3(p1 - p0), DVec3(p2 - p0));
-      if (glm::length(n) < 0.05 * scale * scale) continue;
-      // A real hit point: a ray onto the triangle's interior.
-      double b1 = random.uniform(0.1, 0.8), b2 = random.uniform(0.05, 0.9 - b1);
-      DVec3 target = (1 - b1 - b2) * DVec3(p0) + b1 * DVec3(p1) + b2 * DVec3(p2);
-      DVec3 from = glm::normalize(glm::normalize(n) * (random.uniform() < 0.5 ? 1.0 : -1.0) + 0.5 * random.unitVector());
-      Ray in{Point3(target + from * scale), Vec3(-from)};
-      auto hit = intersectTriangle(in, kAll, p0, p1, p2);
-      if (!hit) continue;
-      SurfacePoint s = triangleSurfacePoint(*hit, p0, p1, p2, nullptr);
-      for (int k = 0; k < 20; ++k) {
-        // Leave on either side, at any angle, including grazing.
-        Vec3 direction(random.unitVector());
-        leaving.push_back({p0, p1, p2, s.point, direction});
-        queries.emplace_back(s.point, s.geometricNormal, direction);
-      }
-    }
+    const Leaving l = leaveTriangles(random, scale, false);
+    all.rays += l.rays, all.selfHits += l.selfHits, all.tooFar += l.tooFar;
   }
-  const std::vector<Point3> origins = candidate::offsetRayOrigins(queries);
-  const int rays = int(origins.size());
-  int selfHits = 0, tooFar = 0;
-  for (size_t i = 0; i < origins.size(); ++i) {
-    const Leaving& l = leaving[i];
-    if (intersectTriangle(Ray{origins[i], l.direction}, kAll, l.p0, l.p1, l.p2)) ++selfHits;
-    if (glm::length(DVec3(origins[i]) - DVec3(l.point)) > 1e-3 * glm::length(DVec3(l.point)) + 1e-4) ++tooFar;
-  }
-  INFO(selfHits << " of " << rays << " rays hit the triangle they leave; " << tooFar << " origins moved too far");
-  CHECK(rays > 20000);
-  CHECK(selfHits == 0);
-  CHECK(tooFar == 0);
+  INFO(all.selfHits << " of " << all.rays << " rays hit the triangle they leave; " << all.tooFar
+                    << " origins moved too far");
+  CHECK(all.rays > 20000);
+  CHECK(all.selfHits == 0);
+  CHECK(all.tooFar == 0);
+}
+
+TEST_CASE("T4.2 ray origins: near the origin, on a triangle 10 across, rays never hit it again" *
+          grading(1, "a point near the origin has tiny coordinates, and so tiny ulps, yet the rounding error "
+                     "of a hit on a large triangle is as large as the triangle's own coordinates make it: within "
+                     "1/32 of the origin move by a fixed small step (Waechter and Binder's 1/65536) instead of "
+                     "by ulps")) {
+  Random random(67);
+  const Leaving l = leaveTriangles(random, 10.0, true);
+  INFO(l.selfHits << " of " << l.rays << " rays hit the triangle they leave; " << l.tooFar << " origins moved too far");
+  CHECK(l.rays > 2000);
+  CHECK(l.selfHits == 0);
+  CHECK(l.tooFar == 0);
 }
 
 // ---------------------------------------------------------------- T4.3
@@ -471,6 +520,47 @@ TEST_CASE("T4.4 direct lighting: an occluder right in front of the light still b
   // Control: beside the shade's shadow the light arrives.
   Hit beside = hitFromAbove(context, Point3(6.0f, 0, 0.0f));
   CHECK(estimate(context, beside, Vec3(0, 1, 0), 50).mean() > 0.0);
+}
+
+TEST_CASE("T4.4 shadow rays: unit directions, ending just short of the light, also far from the origin" *
+          grading(1, "aim the shadow ray from the offset origin: direction = (light - origin) / |light - origin| "
+                     "and range (0, |light - origin| (1 - 1e-4)); the offset may be large far from the origin "
+                     "(256 ulps of 1e4 is 0.25), so the distance from the surface point is not the ray's length")) {
+  // The shadow rays as the trace context records them. Their directions are
+  // unit (every ray of the framework is: task 2's tests rely on it), and
+  // each ends on the segment to the point light, past 99.75 % of the way.
+  for (float height : {0.0f, 1e4f}) {
+    Scene scene;
+    const uint32_t floor = addMaterial(scene, Color(0.5f));
+    addQuad(scene, {-10, height, 10}, {20, 0, 0}, {0, 0, -20}, floor);
+    const Point3 light(0.0f, height + 2.0f, 0.0f);
+    scene.pointLights.push_back(PointLight{light, Color(2.0f)});
+    Rig rig(std::move(scene));
+    TraceContext context = rig.context();
+    std::vector<calls::DirectQuery> queries;
+    std::vector<Hit> hits;
+    for (float x : {0.3f, -1.7f, 4.1f}) {
+      hits.push_back(hitFromAbove(context, Point3(x, height, 0.6f)));
+      queries.emplace_back(hits.back(), Vec3(0, 1, 0), uint32_t(hits.size()), testSeed(1));
+    }
+    const std::vector<std::vector<calls::ShadowQuery>> rays = candidate::shadowRays(context, queries);
+    REQUIRE(rays.size() == queries.size());
+    for (size_t q = 0; q < rays.size(); ++q) {
+      CAPTURE(height);
+      CAPTURE(q);
+      REQUIRE(rays[q].size() == 1);  // one point light, in view
+      const auto& [ray, range] = rays[q][0];
+      const DVec3 origin(ray.origin), direction(ray.direction), toLight = DVec3(light) - origin;
+      const DVec3 end = origin + direction * double(range.max);
+      INFO("shadow ray " << str(ray.origin) << " -> " << str(ray.direction) << " over (" << range.min << ", "
+                         << range.max << "); the light at " << str(light) << ", the surface point "
+                         << str(hits[q].point));
+      CHECK(std::abs(glm::length(direction) - 1.0) < 1e-5);
+      CHECK(glm::length(glm::cross(glm::normalize(toLight), glm::normalize(direction))) < 1e-4);
+      CHECK(glm::dot(DVec3(light) - end, direction) >= 0.0);                           // short of the light
+      CHECK(glm::length(DVec3(light) - end) <= 0.0025 * glm::length(DVec3(light) - DVec3(hits[q].point)));
+    }
+  }
 }
 
 TEST_CASE("T4.4 direct lighting: vertex normals — a light behind the real surface gives nothing" *

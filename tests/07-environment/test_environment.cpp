@@ -92,7 +92,8 @@ double pdfIntegral(const EnvironmentDistribution& d) {
 
 TEST_CASE("T7.1 equirect: directions and (u, v) are inverse, y is up, v = 0 at the zenith" *
           grading(2, "theta = acos(y), phi = atan2(z, x) in [0, 2 pi), u = phi / 2pi, v = theta / pi; and back "
-                     "(sin theta cos phi, cos theta, sin theta sin phi)")) {
+                     "(sin theta cos phi, cos theta, sin theta sin phi); phi + 2 pi can round to exactly 2 pi, so "
+                     "keep u below 1")) {
   CHECK(candidate::directionToEquirect(Vec3(0, 1, 0)).y == doctest::Approx(0.0f));
   CHECK(candidate::directionToEquirect(Vec3(0, -1, 0)).y == doctest::Approx(1.0f));
   CHECK(candidate::directionToEquirect(Vec3(1, 0, 0)).x == doctest::Approx(0.0f));
@@ -109,6 +110,14 @@ TEST_CASE("T7.1 equirect: directions and (u, v) are inverse, y is up, v = 0 at t
     CHECK(near(candidate::equirectToDirection(uv), w, 2e-4f));
   }
   CHECK(finite(candidate::equirectToDirection(candidate::directionToEquirect(Vec3(0, 1.0000001f, 0)))));  // |y| > 1 by rounding
+  // Just below the seam phi = 2 pi - tiny rounds to 2 pi in float: u must
+  // still be below 1 (a u of exactly 1 is the next wrap's first pixel).
+  for (float z : {-1e-7f, -1e-10f, -1e-30f}) {
+    CAPTURE(z);
+    const Point2 uv = candidate::directionToEquirect(glm::normalize(Vec3(1.0f, 0.3f, z)));
+    CHECK(uv.x < 1.0f);
+    CHECK(uv.x > 0.999f);
+  }
 }
 
 TEST_CASE("T7.2 lookup: bilinear between pixel centres, continuous across the u seam, clamped at the poles" *

@@ -28,6 +28,24 @@ inline void serveTraceCalls(Server& server) {
         }
         return estimates;
       });
+  server.serve<calls::ShadowRays>(
+      [](const Scene& scene, const calls::TraceSettings& settings, const std::vector<calls::DirectQuery>& queries) {
+        const test::Rig rig(scene);
+        TraceContext context = contextFor(rig, settings);
+        std::vector<std::vector<calls::ShadowQuery>> rays;
+        std::vector<TracedRay> log;
+        context.log = &log;
+        for (const auto& [hit, wo, pixel, seed] : queries) {
+          log.clear();
+          const Bsdf bsdf(rig.scene().materials.at(hit.material), hit, wo, kLinkedTasks.lobes);
+          Sampler sampler(pixel, 0, seed);
+          estimateDirectLighting(context, hit, bsdf, wo, sampler);
+          rays.emplace_back();
+          for (const TracedRay& traced : log)
+            if (traced.shadow) rays.back().emplace_back(traced.ray, traced.range);
+        }
+        return rays;
+      });
   server.serve<calls::TracePaths>(
       [](const Scene& scene, const calls::TraceSettings& settings, const std::vector<calls::PathQuery>& queries) {
         const test::Rig rig(scene);

@@ -29,6 +29,11 @@ PATHLAB_REMOTE_CALL(DirectLighting, 101, std::vector<Color>(Scene, TraceSettings
 PATHLAB_REMOTE_CALL(TracePaths, 102, std::vector<Color>(Scene, TraceSettings, std::vector<PathQuery>));
 // Bsdf(material, hit, wo).sample(wo, u) for each u.
 PATHLAB_REMOTE_CALL(BsdfSamples, 103, std::vector<std::optional<BsdfSample>>(Material, Hit, Vec3, std::vector<Vec2>));
+// The occlusion queries each DirectLighting query made, as the trace
+// context records them (the framework's log, not the candidate's report).
+using ShadowQuery = std::tuple<Ray, Interval>;
+PATHLAB_REMOTE_CALL(ShadowRays, 104,
+                    std::vector<std::vector<ShadowQuery>>(Scene, TraceSettings, std::vector<DirectQuery>));
 
 inline TraceSettings settingsOf(const TraceContext& context) {
   return {context.settings.lightSamples, context.settings.maxDepth};
@@ -48,6 +53,11 @@ namespace pathlab::candidate {
 // estimateDirectLighting(context, hit, Bsdf(material of hit, hit, wo), wo, Sampler(pixel, 0, seed)) per query.
 inline std::vector<Color> estimateDirectLighting(const TraceContext& context, const std::vector<calls::DirectQuery>& queries) {
   return remote::call<calls::DirectLighting>(context.scene, calls::settingsOf(context), queries);
+}
+// The shadow rays estimateDirectLighting traces for each query.
+inline std::vector<std::vector<calls::ShadowQuery>> shadowRays(const TraceContext& context,
+                                                              const std::vector<calls::DirectQuery>& queries) {
+  return remote::call<calls::ShadowRays>(context.scene, calls::settingsOf(context), queries);
 }
 // tracePath(context, ray, Sampler(pixel, 0, seed)) per query.
 inline std::vector<Color> tracePaths(const TraceContext& context, const std::vector<calls::PathQuery>& queries) {
