@@ -215,7 +215,7 @@ std::string csvQuote(const std::string& text) {
 std::string referenceFileName(const std::string& stem, int spp, const LinkedTasks& linked) {
   std::string name = stem + "-reference-" + std::to_string(spp) + "spp";
   std::string yours, unknown;
-  for (int n = 1; n <= 7; ++n) {
+  for (int n = 1; n <= kTaskCount; ++n) {
     if (linked[n] == Code::Yours) yours += std::to_string(n);
     if (linked[n] == Code::Unknown) unknown += std::to_string(n);
   }

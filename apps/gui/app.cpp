@@ -16,12 +16,12 @@ namespace pathlab::gui {
 namespace {
 
 constexpr Integrator kIntegrators[] = {Integrator::Path, Integrator::Direct, Integrator::Preview, Integrator::Normals};
-constexpr const char* kIntegratorNames[] = {"path (tasks 4-6)", "direct (task 4)", "preview (tasks 1-3)",
+constexpr const char* kIntegratorNames[] = {"path (tasks 4-8)", "direct (task 4)", "preview (tasks 1-3)",
                                             "normals (tasks 1-2)"};
 constexpr const char* kTaskTitles[] = {"", "Camera rays", "Intersection", "BVH", "Direct lighting",
-                                       "Path tracing", "Mirror & glass", "Environment"};
+                                       "Path tracing", "Mirror & glass", "Environment", "Rough materials"};
 constexpr const char* kTabNames[] = {"", "1 Camera", "2 Hits", "3 BVH", "4 Direct", "5 Paths", "6 Mirror/glass",
-                                     "7 Environment"};
+                                     "7 Environment", "8 Rough"};
 static_assert(std::size(kTaskTitles) == kTaskCount + 1 && std::size(kTabNames) == kTaskCount + 1,
               "a title and a tab name for every task folder (core/task_list.h)");
 constexpr int kInspectedSamples = 16;
@@ -117,9 +117,9 @@ App::App(Scene scene, AppOptions options)
   std::istringstream summary(options_.taskSummary);
   for (std::string entry; summary >> entry;) {
     const int task = std::atoi(entry.c_str());
-    if (task >= 1 && task <= 7) studentTask_[size_t(task)] = entry.find("student") != std::string::npos;
+    if (task >= 1 && task <= kTaskCount) studentTask_[size_t(task)] = entry.find("student") != std::string::npos;
   }
-  if (options_.panel >= 1 && options_.panel <= 7) requestedTab_ = options_.panel;
+  if (options_.panel >= 1 && options_.panel <= kTaskCount) requestedTab_ = options_.panel;
   restartRender();
   inspect(IVec2(width_ / 2, height_ / 2));  // the pixel the views inspect until one is clicked
 }
@@ -257,7 +257,7 @@ void App::drawSidePanel(float x, float width, float height) {
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   drawSettings();
   if (ImGui::BeginTabBar("panels")) {
-    for (int tab = 1; tab <= 7; ++tab) {
+    for (int tab = 1; tab <= kTaskCount; ++tab) {
       const ImGuiTabItemFlags flags = requestedTab_ == tab ? ImGuiTabItemFlags_SetSelected : 0;
       char label[64];
       // ### keeps the tab's identity while its label changes.
@@ -318,7 +318,7 @@ void App::drawSettings() {
 
   // Which code runs, and what is not done yet.
   ImGui::Text("tasks:");
-  for (int task = 1; task <= 7; ++task) {
+  for (int task = 1; task <= kTaskCount; ++task) {
     ImGui::SameLine();
     const bool undone = !todosOfTask(task).empty();
     ImGui::TextColored(undone ? kWarning : (studentTask_[size_t(task)] ? kGood : kDim), "%d:%s%s", task,
@@ -455,7 +455,9 @@ bool App::runCommand(const ScriptCommand& command) {
   for (const std::string& arg : command.args) std::printf(" %s", arg.c_str());
   if (verb == "panel") {
     const int panel = int(command.number(0));
-    if (panel < 1 || panel > 7) throw Error("script line " + std::to_string(command.line) + ": panel must be 1..7");
+    if (panel < 1 || panel > kTaskCount) {
+      throw Error("script line " + std::to_string(command.line) + ": panel must be 1.." + std::to_string(kTaskCount));
+    }
     requestedTab_ = selectedTab_ = panel;
   } else if (verb == "lab") {
     if (!lab_.select(command.args[0])) {

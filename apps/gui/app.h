@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "background_worker.h"
+#include "core/task_list.h"
 #include "debug/debug_views.h"
 #include "debug/inspect.h"
 #include "lab_panel.h"
@@ -90,7 +91,7 @@ class App : public ShellClient {
   int width_, height_, spp_, maxDepth_, lightSamples_;
   int integrator_ = 0;  // index into kIntegrators
   float exposure_ = 0.0f;
-  std::array<bool, 8> studentTask_{};
+  std::array<bool, kTaskCount + 1> studentTask_{};  // by task number ([0] unused)
 
   std::shared_ptr<const Scene> scene_;  // the scene being rendered
   uint64_t generation_ = 0;
@@ -110,7 +111,7 @@ class App : public ShellClient {
 
   int selectedTab_ = 1;        // the task whose panel is shown (kLabTab: the sampling lab)
   int requestedTab_ = -1;      // a tab to select programmatically this frame
-  std::array<int, 8> selectedView_{};
+  std::array<int, kTaskCount + 1> selectedView_{};   // by task number ([0] unused)
   int depth_ = 3;
   std::optional<Camera> viewCamera_;
   BackgroundWorker<ViewJob, ViewResult> viewWorker_;

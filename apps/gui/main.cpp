@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
   CLI::App cli("PathLab visual debugger: the render, a pixel inspector and one panel per task", "pathlab-gui");
   Arguments args;
   cli.add_option("scene", args.scene, "scene file (.json or .dae); default: the embedded Cornell box");
-  cli.add_option("--panel", args.panel, "open on task N's panel (1-7)")->check(CLI::Range(1, 7));
+  cli.add_option("--panel", args.panel, "open on task N's panel (1-" + std::to_string(kTaskCount) + ")")->check(CLI::Range(1, kTaskCount));
   cli.add_option("--screenshot", args.screenshot,
                  "render, show the panel, save the window to FILE.png and exit (tests, docs, CI under xvfb-run)");
   cli.add_option("--script", args.script, "run the commands in FILE (see apps/gui/script.h), then keep going");

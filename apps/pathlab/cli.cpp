@@ -180,6 +180,7 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
     std::printf("time %.3f s (BVH build %.1f ms), %s samples/s, %s rays/s\n", stats.seconds, stats.buildSeconds * 1e3,
                 formatRate(double(stats.samples) / stats.seconds).c_str(),
                 formatRate(double(stats.rays) / stats.seconds).c_str());
+    std::printf("lit by tasks %s\n", tasksLightingRender(scene, options.integrator).c_str());
   }
   std::optional<ImageError> error;
   if (reference) {

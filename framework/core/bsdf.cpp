@@ -3,6 +3,15 @@
 #include <cmath>
 
 namespace pathlab {
+namespace {
+
+RoughConductor conductorOf(const Material& m) {
+  return RoughConductor{m.roughness, m.albedo, m.exactFresnel, m.eta, m.k};
+}
+
+RoughPlastic plasticOf(const Material& m) { return RoughPlastic{m.roughness, m.albedo, m.ior}; }
+
+}  // namespace
 
 Bsdf::Bsdf(const Material& material, const Hit& hit, const Vec3& wo, const BsdfLobes& lobes)
     : material_(material), lobes_(&lobes) {
@@ -23,12 +32,26 @@ Color Bsdf::f(const Vec3& wo, const Vec3& wi) const {
   if (glm::dot(wi, frame_.n) <= 0.0f || glm::dot(wi, geometricNormal_) <= 0.0f || glm::dot(wo, frame_.n) <= 0.0f) {
     return Color(0.0f);
   }
-  return lobes_->lambertianBrdf(material_.albedo);
+  switch (material_.type) {
+    case MaterialType::RoughConductor:
+      return lobes_->conductorBrdf(frame_.toLocal(wo), frame_.toLocal(wi), conductorOf(material_));
+    case MaterialType::RoughPlastic:
+      return lobes_->plasticBrdf(frame_.toLocal(wo), frame_.toLocal(wi), plasticOf(material_));
+    default:
+      return lobes_->lambertianBrdf(material_.albedo);
+  }
 }
 
-float Bsdf::pdf(const Vec3& /*wo*/, const Vec3& wi) const {
+float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
   if (isDelta()) return 0.0f;
-  return lobes_->diffuseDirectionPdf(frame_.toLocal(wi));
+  switch (material_.type) {
+    case MaterialType::RoughConductor:
+      return lobes_->conductorPdf(frame_.toLocal(wo), frame_.toLocal(wi), conductorOf(material_));
+    case MaterialType::RoughPlastic:
+      return lobes_->plasticPdf(frame_.toLocal(wo), frame_.toLocal(wi), plasticOf(material_));
+    default:
+      return lobes_->diffuseDirectionPdf(frame_.toLocal(wi));
+  }
 }
 
 std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, Vec2 u) const {
@@ -45,6 +68,20 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, Vec2 u) const {
     }
     s.wi = glm::normalize(frame.toWorld(s.wi));
     s.isDelta = true;
+    return s;
+  }
+  if (material_.type == MaterialType::RoughConductor || material_.type == MaterialType::RoughPlastic) {
+    const Vec3 woLocal = frame_.toLocal(wo);
+    std::optional<BsdfSample> s = material_.type == MaterialType::RoughConductor
+                                      ? lobes_->sampleConductor(woLocal, u, conductorOf(material_))
+                                      : lobes_->samplePlastic(woLocal, u, plasticOf(material_));
+    if (!s || !(s->pdf > 0.0f) || !std::isfinite(s->pdf) || !isFinite(s->wi) || !(s->wi.z > 0.0f) || !isFinite(s->f)) {
+      return std::nullopt;
+    }
+    s->wi = glm::normalize(frame_.toWorld(s->wi));
+    s->isDelta = false;
+    // Below the geometric surface (a shading normal that tilts): no light.
+    if (glm::dot(s->wi, geometricNormal_) <= 0.0f) s->f = Color(0.0f);
     return s;
   }
   const Vec3 local = lobes_->sampleDiffuseDirection(u);

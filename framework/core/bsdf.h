@@ -2,7 +2,8 @@
 // Surfaces are two-sided: the frame's normal is flipped to the side wo
 // leaves from. The diffuse lobe is built from task 4 (f) and task 5
 // (direction sampling); mirror and glass from task 6 (delta lobes: sampled,
-// never evaluated — f() and pdf() are 0 for them). The task functions come
+// never evaluated — f() and pdf() are 0 for them); rough conductor and rough
+// plastic from task 8 (f, pdf and sample in the local frame). The task functions come
 // in a BsdfLobes table (task_functions.h); estimators get their Bsdf from
 // TraceContext::bsdf, which passes the linked tasks' table.
 #pragma once
@@ -24,7 +25,7 @@ class Bsdf {
   // The shading normal, on the side of wo.
   const Vec3& normal() const { return frame_.n; }
   const Frame& frame() const { return frame_; }
-  bool isDelta() const { return material_.type != MaterialType::Diffuse; }
+  bool isDelta() const { return material_.type == MaterialType::Mirror || material_.type == MaterialType::Glass; }
 
   // f(wo, wi) for world-space unit directions; 0 for delta lobes.
   Color f(const Vec3& wo, const Vec3& wi) const;

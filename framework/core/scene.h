@@ -15,15 +15,32 @@
 
 namespace pathlab {
 
-enum class MaterialType { Diffuse, Mirror, Glass };
+enum class MaterialType { Diffuse, Mirror, Glass, RoughConductor, RoughPlastic };
+
+// The name a scene file gives each type ("diffuse", ..., "conductor", "plastic").
+inline const char* materialTypeName(MaterialType type) {
+  switch (type) {
+    case MaterialType::Diffuse: return "diffuse";
+    case MaterialType::Mirror: return "mirror";
+    case MaterialType::Glass: return "glass";
+    case MaterialType::RoughConductor: return "conductor";
+    case MaterialType::RoughPlastic: return "plastic";
+  }
+  return "?";
+}
 
 struct Material {
   std::string name;
   MaterialType type = MaterialType::Diffuse;
-  Color albedo{0.8f};          // diffuse reflectance, or mirror/glass reflectance tint
+  Color albedo{0.8f};          // diffuse reflectance, mirror/glass reflectance tint, a rough
+                               // conductor's F0 (Schlick), or a rough plastic's diffuse base
   Color transmittance{1.0f};   // glass only
-  float ior = 1.5f;            // glass only: index of refraction inside / outside
+  float ior = 1.5f;            // glass, and a rough plastic's coat: index of refraction inside / outside
   Color emission{0.0f};        // emitted radiance Le, on any material
+  // Rough conductor and rough plastic (task 8).
+  float roughness = 0.5f;      // perceptual roughness in [0, 1]: alpha = roughness^2
+  bool exactFresnel = false;   // conductor: Fresnel from eta and k instead of Schlick from albedo
+  Color eta{0.0f}, k{0.0f};    // conductor: the complex index of refraction eta + i k, per channel
 
   bool isEmissive() const { return maxComponent(emission) > 0.0f; }
 };

@@ -1,6 +1,6 @@
 // The task functions the core's services call, as tables of function
 // pointers: a BVH leaf tests its primitives with task 2 (leaf_geometry.h), a
-// Bsdf evaluates and samples its lobes with tasks 4, 5 and 6 (bsdf.h), the
+// Bsdf evaluates and samples its lobes with tasks 4, 5, 6 and 8 (bsdf.h), the
 // environment light looks up and samples its map with task 7 (lights.h).
 // The core declares the tables and never names a task; the render layer
 // fills them with the task code the binary links (task_wiring.h). So the
@@ -13,6 +13,7 @@
 #include "core/bsdf_sample.h"
 #include "core/environment_distribution.h"
 #include "core/hit.h"
+#include "core/microfacet_material.h"
 #include "util/image.h"
 #include "util/math.h"
 #include "util/ray.h"
@@ -26,7 +27,7 @@ struct PrimitiveTests {
   std::optional<float> (*intersectSphere)(const Ray&, Interval, const Point3&, float) = nullptr;
 };
 
-// Tasks 4, 5 and 6 (tasks/direct_lighting.h, path_tracing.h, mirror_glass.h).
+// Tasks 4, 5, 6 and 8 (tasks/direct_lighting.h, path_tracing.h, mirror_glass.h, microfacet.h).
 struct BsdfLobes {
   Color (*lambertianBrdf)(const Color& albedo) = nullptr;
   Vec3 (*sampleDiffuseDirection)(Vec2 u) = nullptr;
@@ -34,6 +35,12 @@ struct BsdfLobes {
   BsdfSample (*sampleMirror)(const Vec3& wo, const Color& reflectance) = nullptr;
   BsdfSample (*sampleGlass)(const Vec3& wo, const Color& reflectance, const Color& transmittance, float ior,
                             float u) = nullptr;
+  Color (*conductorBrdf)(const Vec3& wo, const Vec3& wi, const RoughConductor&) = nullptr;
+  std::optional<BsdfSample> (*sampleConductor)(const Vec3& wo, Vec2 u, const RoughConductor&) = nullptr;
+  float (*conductorPdf)(const Vec3& wo, const Vec3& wi, const RoughConductor&) = nullptr;
+  Color (*plasticBrdf)(const Vec3& wo, const Vec3& wi, const RoughPlastic&) = nullptr;
+  std::optional<BsdfSample> (*samplePlastic)(const Vec3& wo, Vec2 u, const RoughPlastic&) = nullptr;
+  float (*plasticPdf)(const Vec3& wo, const Vec3& wi, const RoughPlastic&) = nullptr;
 };
 
 // Task 7 (tasks/environment.h).

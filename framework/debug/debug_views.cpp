@@ -38,6 +38,7 @@ std::vector<DebugView> allDebugViews() {
   addPathTracingViews(views);
   addMirrorGlassViews(views);
   addEnvironmentViews(views);
+  addMicrofacetViews(views);
   return views;
 }
 

@@ -65,6 +65,8 @@ class Accelerator;
 Image scenePreview(const DebugViewRequest& request, const Accelerator& accelerator, float brightness);
 // A yellow square around the inspected pixel (when the view is drawn from the scene's camera).
 void markInspectedPixel(Image& image, const DebugViewRequest& request);
+// The BSDF lobe at the inspected pixel: sampled directions beside the pdf (debug/lobe_view.cpp).
+DebugOutput bsdfLobeView(const DebugViewRequest& request);
 
 // Every view of every task, in task order.
 std::vector<DebugView> allDebugViews();
@@ -77,5 +79,6 @@ void addDirectLightingViews(std::vector<DebugView>& views); // tasks/04-direct-l
 void addPathTracingViews(std::vector<DebugView>& views);    // tasks/05-path-tracing/debugger.cpp
 void addMirrorGlassViews(std::vector<DebugView>& views);    // tasks/06-mirror-glass/debugger.cpp
 void addEnvironmentViews(std::vector<DebugView>& views);    // tasks/07-environment/debugger.cpp
+void addMicrofacetViews(std::vector<DebugView>& views);     // tasks/08-microfacet/debugger.cpp
 
 }  // namespace pathlab

@@ -17,21 +17,13 @@ std::string format(const char* pattern, auto... values) {
 
 std::string vec(const Vec3& v) { return format("(%.3f, %.3f, %.3f)", double(v.x), double(v.y), double(v.z)); }
 
-const char* materialKind(MaterialType type) {
-  switch (type) {
-    case MaterialType::Diffuse: return "diffuse";
-    case MaterialType::Mirror: return "mirror";
-    case MaterialType::Glass: return "glass";
-  }
-  return "?";
-}
 
 std::string describeHit(const Scene& scene, const TracedRay& traced) {
   if (!traced.hit) return "missed: background";
   const Hit& hit = traced.record;
   const Material& material = scene.materials[hit.material];
   std::string line = format("hit t=%.4g at ", double(hit.t)) + vec(hit.point) + " n=" + vec(hit.shadingNormal);
-  line += format(" %s \"%s\", primitive %u", materialKind(material.type), material.name.c_str(), hit.primitive);
+  line += format(" %s \"%s\", primitive %u", materialTypeName(material.type), material.name.c_str(), hit.primitive);
   if (material.isEmissive()) line += ", emissive";
   return line;
 }

@@ -31,6 +31,35 @@ const char* integratorName(Integrator integrator) {
   return "?";
 }
 
+std::string tasksLightingRender(const Scene& scene, Integrator integrator) {
+  std::vector<int> tasks = {1, 2, 3};
+  if (integrator == Integrator::Path || integrator == Integrator::Direct) tasks.push_back(4);
+  if (integrator == Integrator::Path) tasks.push_back(5);
+  const bool lit = integrator == Integrator::Path || integrator == Integrator::Direct;
+  auto has = [&](auto predicate) { return std::any_of(scene.materials.begin(), scene.materials.end(), predicate); };
+  if (integrator == Integrator::Path &&
+      has([](const Material& m) { return m.type == MaterialType::Mirror || m.type == MaterialType::Glass; })) {
+    tasks.push_back(6);
+  }
+  if (lit && scene.environment && !scene.environment->image.pixels.empty()) tasks.push_back(7);
+  if (lit && has([](const Material& m) {
+        return m.type == MaterialType::RoughConductor || m.type == MaterialType::RoughPlastic;
+      })) {
+    tasks.push_back(8);
+  }
+  // Runs of consecutive tasks as "a-b".
+  std::string text;
+  for (size_t i = 0; i < tasks.size();) {
+    size_t j = i;
+    while (j + 1 < tasks.size() && tasks[j + 1] == tasks[j] + 1) ++j;
+    if (!text.empty()) text += ", ";
+    text += j > i + 1 ? std::to_string(tasks[i]) + "-" + std::to_string(tasks[j])
+                      : std::to_string(tasks[i]) + (j == i + 1 ? ", " + std::to_string(tasks[j]) : "");
+    i = j + 1;
+  }
+  return text;
+}
+
 std::optional<SampleSequence> sampleSequenceFromName(const std::string& name) {
   if (name == "independent") return SampleSequence::Independent;
   if (name == "stratified") return SampleSequence::Stratified;

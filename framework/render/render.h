@@ -33,6 +33,12 @@ enum class Integrator {
 
 std::optional<Integrator> integratorFromName(const std::string& name);
 const char* integratorName(Integrator integrator);
+
+// The tasks whose code lights a render of `scene` with `integrator`, e.g.
+// "1-5, 8": camera rays, hits and the tree always; direct lighting and paths
+// by the integrator; mirror and glass (6), an environment map (7) and rough
+// materials (8) only where the scene has them.
+std::string tasksLightingRender(const Scene& scene, Integrator integrator);
 // --sampler: "independent" or "sobol".
 std::optional<SampleSequence> sampleSequenceFromName(const std::string& name);
 const char* sampleSequenceName(SampleSequence sequence);

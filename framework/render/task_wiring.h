@@ -7,6 +7,7 @@
 #include "tasks/direct_lighting.h"
 #include "tasks/environment.h"
 #include "tasks/intersection.h"
+#include "tasks/microfacet.h"
 #include "tasks/mirror_glass.h"
 #include "tasks/path_tracing.h"
 
@@ -14,7 +15,8 @@ namespace pathlab {
 
 inline constexpr TaskFunctions kLinkedTasks{
     .primitives = {&intersectTriangle, &intersectSphere},
-    .lobes = {&lambertianBrdf, &sampleDiffuseDirection, &diffuseDirectionPdf, &sampleMirror, &sampleGlass},
+    .lobes = {&lambertianBrdf, &sampleDiffuseDirection, &diffuseDirectionPdf, &sampleMirror, &sampleGlass,
+              &conductorBrdf, &sampleConductor, &conductorPdf, &plasticBrdf, &samplePlastic, &plasticPdf},
     .environment = {&directionToEquirect, &lookupEnvironment, &sampleUniformSphere, &buildEnvironmentDistribution,
                     &sampleEnvironment, &environmentPdf},
 };

@@ -72,6 +72,13 @@ RenderSettings parseRender(const Object& o) {
 
 // ---- materials --------------------------------------------------------------
 
+// A rough material's perceptual roughness, in [0, 1] (alpha = roughness^2, task 8).
+float roughnessOf(const Object& o) {
+  const float r = o.number("roughness", 0.5f);
+  if (!(r >= 0.0f && r <= 1.0f)) o.fail(o.field("roughness"), "expected a number in [0, 1], got " + o.at("roughness").dump());
+  return r;
+}
+
 Material parseMaterial(const Source& source, const Json& j, const std::string& path, const std::string& name) {
   std::string type = j.is_object() && j.contains("type") && j["type"].is_string() ? j["type"].get<std::string>()
                                                                                  : "diffuse";
@@ -94,10 +101,31 @@ Material parseMaterial(const Source& source, const Json& j, const std::string& p
     m.transmittance = o.color("transmittance", m.transmittance, 1.0f);
     m.ior = o.positive("ior", m.ior);
     m.emission = o.color("emission", m.emission);
+  } else if (type == "conductor") {
+    Object o(source, j, path, {"type", "roughness", "f0", "eta", "k", "emission"});
+    m.type = MaterialType::RoughConductor;
+    m.roughness = roughnessOf(o);
+    m.albedo = o.color("f0", Color(0.9f), 1.0f);
+    if (o.has("eta") != o.has("k")) o.fail(o.field(o.has("eta") ? "k" : "eta"), "missing: eta and k come together");
+    if (o.has("eta") && o.has("f0")) o.fail(o.field("f0"), "give either f0 (Schlick) or eta and k (exact), not both");
+    if (o.has("eta")) {
+      m.exactFresnel = true;
+      m.eta = o.color("eta", Color(1.0f));
+      m.k = o.color("k", Color(0.0f));
+      if (!(std::min({m.eta.x, m.eta.y, m.eta.z}) > 0.0f)) o.fail(o.field("eta"), "expected positive components, got " + o.at("eta").dump());
+    }
+    m.emission = o.color("emission", m.emission);
+  } else if (type == "plastic") {
+    Object o(source, j, path, {"type", "roughness", "albedo", "ior", "emission"});
+    m.type = MaterialType::RoughPlastic;
+    m.roughness = roughnessOf(o);
+    m.albedo = o.color("albedo", Color(0.5f), 1.0f);
+    m.ior = o.positive("ior", 1.5f);
+    m.emission = o.color("emission", m.emission);
   } else {
     Object o(source, j, path, {"type"});  // reports a non-object or a non-string type first
     o.fail(o.field("type"), "unknown material type " + inQuotes(j["type"].get<std::string>()) +
-                                " (expected \"diffuse\", \"mirror\" or \"glass\")");
+                                " (expected \"diffuse\", \"mirror\", \"glass\", \"conductor\" or \"plastic\")");
   }
   return m;
 }

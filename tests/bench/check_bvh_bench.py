@@ -31,6 +31,11 @@ import re
 import subprocess
 import sys
 import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "tools"))
+import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.normpath(os.path.join(HERE, "..", ".."))
@@ -140,7 +145,8 @@ with tempfile.TemporaryDirectory(prefix="pathlab-bench-converge-") as tmp:
     if check(out.returncode == 0, f"converge: pathlab-bench exited with {out.returncode}"):
         result = json.loads(out.stdout.strip().splitlines()[-1])
         tasks = result.get("tasks", {})
-        check(sorted(tasks) == [str(n) for n in range(1, 8)], "converge: 'tasks' does not name tasks 1-7")
+        every = sorted(str(n) for n in pathlab_tasks.tasks(ROOT))
+        check(sorted(tasks, key=int) == sorted(every, key=int), f"converge: 'tasks' does not name tasks {every}")
         check(all(v in ("yours", "reference") for v in tasks.values()),
               f"converge: tasks {tasks} (whose code ran is not recorded in this pathlab-bench)")
         check(re.search(r"^code: task", out.stdout, re.M) is not None, "converge: no 'code:' line")

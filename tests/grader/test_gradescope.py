@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The Gradescope autograder as Gradescope runs it: tools/gradescope/make-zip.sh
-builds the zip; it is unpacked into a scratch folder standing in for
+builds the zip (an assignment of every task, the extensions too); it is unpacked into a scratch folder standing in for
 /autograder (AUTOGRADER_ROOT), so the zip's root is AUTOGRADER_ROOT/source;
 setup.sh runs there once (as root, without apt-get: PATHLAB_SKIP_APT=1, the
 packages must be installed), run_autograder is copied to AUTOGRADER_ROOT/,
@@ -34,6 +34,9 @@ work = work_dir / "gradescope"
 autograder = work / "autograder"  # stands in for /autograder
 REAL = Path("/autograder")
 SETUP_TIMEOUT, GRADE_TIMEOUT = 1200, 900
+sys.path.insert(0, str(root / "tools"))
+import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
+ALL_TASKS = sorted(pathlab_tasks.tasks(root))
 VISIBILITIES = {"hidden", "after_due_date", "after_published", "visible"}
 # Graded here and by a student's tools/check (test_check.py): mistakes that
 # keep part of the points, and correct solutions written differently.
@@ -163,10 +166,11 @@ def main() -> int:
     # The zip, unpacked where Gradescope unpacks it.
     with tempfile.TemporaryDirectory(prefix="pathlab-zip-") as temp:
         archive = Path(temp) / "autograder.zip"
-        subprocess.run(["bash", str(root / "tools/gradescope/make-zip.sh"), str(archive)], check=True,
-                       stdout=subprocess.DEVNULL, timeout=300)
+        # An assignment with every task, the extensions too (make-zip.sh --tasks).
+        subprocess.run(["bash", str(root / "tools/gradescope/make-zip.sh"), str(archive), "--tasks",
+                        ",".join(str(n) for n in ALL_TASKS)], check=True, stdout=subprocess.DEVNULL, timeout=300)
         names = set(zipfile.ZipFile(archive).namelist())
-        for required in ("setup.sh", "run_autograder", "gradescope-timeout", "source/CMakeLists.txt",
+        for required in ("setup.sh", "run_autograder", "gradescope-timeout", "gradescope-tasks", "source/CMakeLists.txt",
                          "source/tools/grade"):
             if required not in names:
                 failures.append(f"the zip has no {required}")
@@ -198,8 +202,8 @@ def main() -> int:
                 lost = [t["name"] for t in reference["tests"] if t["score"] != t["max_score"]]
                 failures.append(f"reference: scored {reference['score']:g} of {points:g} (lost: {lost[:3]})")
             tasks = {t["name"].split(":")[0] for t in reference["tests"]}
-            if tasks != {f"Task {n}" for n in range(1, 8)}:
-                failures.append(f"reference: the tests cover {sorted(tasks)}, not tasks 1-7")
+            if tasks != {f"Task {n}" for n in ALL_TASKS}:
+                failures.append(f"reference: the tests cover {sorted(tasks)}, not tasks {ALL_TASKS}")
         stubs = grade("stubs", sorted(root.glob("tasks/*/*.cpp")), env, failures)
         if stubs:
             if stubs["score"] != 0 or any(t["score"] != 0 for t in stubs["tests"]):

@@ -157,6 +157,9 @@ panel 6
 wait-panel
 panel 7
 wait-panel
+panel 8
+view curves
+wait-panel
 lab environment
 wait-panel
 click 10 10

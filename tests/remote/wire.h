@@ -213,7 +213,10 @@ PATHLAB_WIRE_FIELDS(LightDirection, s.wi, s.distance, s.pdfSolidAngle);
 PATHLAB_WIRE_FIELDS(BsdfSample, s.wi, s.f, s.pdf, s.isDelta);
 PATHLAB_WIRE_FIELDS(EnvironmentDistribution, s.width, s.height, s.marginalCdf, s.conditionalCdf, s.totalWeight);
 PATHLAB_WIRE_FIELDS(EnvironmentSample, s.direction, s.pdfSolidAngle);
-PATHLAB_WIRE_FIELDS(Material, s.name, s.type, s.albedo, s.transmittance, s.ior, s.emission);
+PATHLAB_WIRE_FIELDS(Material, s.name, s.type, s.albedo, s.transmittance, s.ior, s.emission, s.roughness, s.exactFresnel,
+                    s.eta, s.k);
+PATHLAB_WIRE_FIELDS(RoughConductor, s.roughness, s.f0, s.exactFresnel, s.eta, s.k);
+PATHLAB_WIRE_FIELDS(RoughPlastic, s.roughness, s.diffuse, s.ior);
 PATHLAB_WIRE_FIELDS(TriangleMesh, s.name, s.positions, s.normals, s.triangles, s.material);
 PATHLAB_WIRE_FIELDS(Sphere, s.center, s.radius, s.material);
 PATHLAB_WIRE_FIELDS(PointLight, s.position, s.intensity);
