@@ -475,7 +475,7 @@ Warp ggxNormalsWarp() {
 
 Warp visibleNormalsWarp() {
   return {"visible-normals", "T8.5", "sampleVisibleNormal against visibleNormalPdf for wo at a chosen angle",
-          {{"angle", 60.0, 0.0, 89.0, false, false, "wo's angle from the normal, degrees"},
+          {{"angle", 70.0, 0.0, 89.0, false, false, "wo's angle from the normal, degrees"},
            {"roughness", 0.5, 0.05, 1.0, false, false, "perceptual roughness (alpha = roughness^2)"}},
           [](const Values& p, const WarpFiles&) {
             const float alpha = alphaFromRoughness(float(p.at("roughness")));
