@@ -549,7 +549,8 @@ TEST_CASE("T4.4 shadow rays: unit directions, ending just short of the light, al
       CAPTURE(height);
       CAPTURE(q);
       REQUIRE(rays[q].size() == 1);  // one point light, in view
-      const auto& [ray, range] = rays[q][0];
+      const Ray& ray = std::get<0>(rays[q][0]);  // (not a structured binding: INFO's lambda must capture it)
+      const Interval& range = std::get<1>(rays[q][0]);
       const DVec3 origin(ray.origin), direction(ray.direction), toLight = DVec3(light) - origin;
       const DVec3 end = origin + direction * double(range.max);
       INFO("shadow ray " << str(ray.origin) << " -> " << str(ray.direction) << " over (" << range.min << ", "
