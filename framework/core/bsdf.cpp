@@ -3,15 +3,6 @@
 #include <cmath>
 
 namespace pathlab {
-namespace {
-
-RoughConductor conductorOf(const Material& m) {
-  return RoughConductor{m.roughness, m.albedo, m.exactFresnel, m.eta, m.k};
-}
-
-RoughPlastic plasticOf(const Material& m) { return RoughPlastic{m.roughness, m.albedo, m.ior}; }
-
-}  // namespace
 
 Bsdf::Bsdf(const Material& material, const Hit& hit, const Vec3& wo, const BsdfLobes& lobes)
     : material_(material), lobes_(&lobes) {
@@ -34,9 +25,9 @@ Color Bsdf::f(const Vec3& wo, const Vec3& wi) const {
   }
   switch (material_.type) {
     case MaterialType::RoughConductor:
-      return lobes_->conductorBrdf(frame_.toLocal(wo), frame_.toLocal(wi), conductorOf(material_));
+      return lobes_->conductorBrdf(frame_.toLocal(wo), frame_.toLocal(wi), material_.roughConductor());
     case MaterialType::RoughPlastic:
-      return lobes_->plasticBrdf(frame_.toLocal(wo), frame_.toLocal(wi), plasticOf(material_));
+      return lobes_->plasticBrdf(frame_.toLocal(wo), frame_.toLocal(wi), material_.roughPlastic());
     default:
       return lobes_->lambertianBrdf(material_.albedo);
   }
@@ -46,9 +37,9 @@ float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
   if (isDelta()) return 0.0f;
   switch (material_.type) {
     case MaterialType::RoughConductor:
-      return lobes_->conductorPdf(frame_.toLocal(wo), frame_.toLocal(wi), conductorOf(material_));
+      return lobes_->conductorPdf(frame_.toLocal(wo), frame_.toLocal(wi), material_.roughConductor());
     case MaterialType::RoughPlastic:
-      return lobes_->plasticPdf(frame_.toLocal(wo), frame_.toLocal(wi), plasticOf(material_));
+      return lobes_->plasticPdf(frame_.toLocal(wo), frame_.toLocal(wi), material_.roughPlastic());
     default:
       return lobes_->diffuseDirectionPdf(frame_.toLocal(wi));
   }
@@ -73,8 +64,8 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, Vec2 u) const {
   if (material_.type == MaterialType::RoughConductor || material_.type == MaterialType::RoughPlastic) {
     const Vec3 woLocal = frame_.toLocal(wo);
     std::optional<BsdfSample> s = material_.type == MaterialType::RoughConductor
-                                      ? lobes_->sampleConductor(woLocal, u, conductorOf(material_))
-                                      : lobes_->samplePlastic(woLocal, u, plasticOf(material_));
+                                      ? lobes_->sampleConductor(woLocal, u, material_.roughConductor())
+                                      : lobes_->samplePlastic(woLocal, u, material_.roughPlastic());
     if (!s || !(s->pdf > 0.0f) || !std::isfinite(s->pdf) || !isFinite(s->wi) || !(s->wi.z > 0.0f) || !isFinite(s->f)) {
       return std::nullopt;
     }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "core/microfacet_material.h"
 #include "util/image.h"
 #include "util/math.h"
 
@@ -43,6 +44,9 @@ struct Material {
   Color eta{0.0f}, k{0.0f};    // conductor: the complex index of refraction eta + i k, per channel
 
   bool isEmissive() const { return maxComponent(emission) > 0.0f; }
+  // The parameters task 8's functions take, for a rough conductor or plastic.
+  RoughConductor roughConductor() const { return RoughConductor{roughness, albedo, exactFresnel, eta, k}; }
+  RoughPlastic roughPlastic() const { return RoughPlastic{roughness, albedo, ior}; }
 };
 
 struct TriangleMesh {

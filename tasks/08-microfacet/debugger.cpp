@@ -57,12 +57,12 @@ Inspected inspect(const DebugViewRequest& request) {
 
 // f and pdf of a rough material in the local frame (task 8's functions).
 Color brdf(const Material& m, const Vec3& wo, const Vec3& wi) {
-  return m.type == MaterialType::RoughPlastic ? plasticBrdf(wo, wi, RoughPlastic{m.roughness, m.albedo, m.ior})
-                                              : conductorBrdf(wo, wi, RoughConductor{m.roughness, m.albedo, m.exactFresnel, m.eta, m.k});
+  return m.type == MaterialType::RoughPlastic ? plasticBrdf(wo, wi, m.roughPlastic())
+                                              : conductorBrdf(wo, wi, m.roughConductor());
 }
 float pdf(const Material& m, const Vec3& wo, const Vec3& wi) {
-  return m.type == MaterialType::RoughPlastic ? plasticPdf(wo, wi, RoughPlastic{m.roughness, m.albedo, m.ior})
-                                              : conductorPdf(wo, wi, RoughConductor{m.roughness, m.albedo, m.exactFresnel, m.eta, m.k});
+  return m.type == MaterialType::RoughPlastic ? plasticPdf(wo, wi, m.roughPlastic())
+                                              : conductorPdf(wo, wi, m.roughConductor());
 }
 
 // The direction at signed angle theta (degrees) from the normal in wo's

@@ -492,7 +492,7 @@ namespace {
 // space, with the samples that return nothing as one more cell; and each
 // sample's f and pdf against f() and pdf() in the direction it drew.
 struct SamplerCheck {
-  int inconsistent = 0, invalid = 0;
+  int inconsistent = 0, invalid = 0, pdfBelow = 0;
   ChiSquareResult chi;
   double pdfIntegral = 0.0;
   MeanEstimate albedo;  // f.y cos theta_i / pdf, 0 for nothing (a furnace of F = 1, or its colour's green)
@@ -558,6 +558,16 @@ SamplerCheck checkSampler(const std::string& name, const DVec3& wo, const Materi
       a, samples);
   for (size_t i = 0; i + 1 < expected.size(); ++i) check.pdfIntegral += expected[i] / samples;
   check.chi = stretchedChiSquare(name, stretched, nothing + check.invalid, expected, true);
+  // pdf() is the density of what the sampler draws, which is never below the
+  // surface: 0 there (task 9's MIS weights read it for directions a light gave).
+  Random random(seed + stream);
+  std::vector<typename PdfCall::Args> below;
+  for (int i = 0; i < 64; ++i) {
+    DVec3 wi = random.unitVector();
+    wi.z = -std::max(std::abs(wi.z), 1e-3);
+    below.emplace_back(Vec3(wo), Vec3(glm::normalize(wi)), material);
+  }
+  for (float p : candidate::many<PdfCall>(below)) check.pdfBelow += p != 0.0f;
   return check;
 }
 
@@ -566,6 +576,8 @@ void reportSampler(const SamplerCheck& c) {
                       << " invalid (below the surface, not unit, a delta, a pdf <= 0, NaN)");
   CHECK(c.inconsistent == 0);
   CHECK(c.invalid == 0);
+  INFO(c.pdfBelow << " of 64 directions below the surface where pdf() is not 0");
+  CHECK(c.pdfBelow == 0);
   INFO("pdf() integrates to " << c.pdfIntegral << " over the directions above the surface");
   CHECK(c.pdfIntegral <= 1.005);
   INFO("chi-square " << c.chi.statistic << " with " << c.chi.degreesOfFreedom << " dof: p = " << c.chi.pValue << " "
@@ -596,8 +608,9 @@ const double kAngles[] = {0.0, 30.0, 60.0, 80.0, 85.0};
 
 TEST_CASE("T8.6 conductor sampling: samples follow pdf(), and carry f and pdf of the direction they drew" *
           grading(3, "draw m from the visible normals, wi = reflect(wo, m) = 2 (wo.m) m - wo, nothing if wi.z <= 0; "
-                     "pdf = D_wo(m) / (4 |wo.m|) (the 1/(4|wo.m|) is the Jacobian from m to wi); f = conductorBrdf. "
-                     "Sampling D cos instead of the visible normals is right too, with its own pdf")) {
+                     "pdf = D_wo(m) / (4 |wo.m|) (the 1/(4|wo.m|) is the Jacobian from m to wi); f = conductorBrdf; "
+                     "conductorPdf is 0 below the surface. Sampling D cos instead of the visible normals is right "
+                     "too, with its own pdf")) {
   uint32_t stream = 100;
   for (float roughness : kRoughnesses) {
     for (double theta : kAngles) {
@@ -648,7 +661,8 @@ TEST_CASE("T8.7 plastic BRDF: the coat's specular lobe plus the base, dimmed by 
   Random random(89);
   std::vector<calls::PlasticBrdf::Args> queries, swapped;
   for (float roughness : {0.1f, 0.5f, 1.0f}) {
-    const RoughPlastic p = plastic(roughness);
+    RoughPlastic p = plastic(roughness);
+    p.ior = roughness == 0.1f ? 1.33f : roughness == 0.5f ? 1.5f : 2.4f;  // water, plastic, diamond
     for (int i = 0; i < 300; ++i) {
       DVec3 wo = random.unitVector(), wi = random.unitVector();
       wo.z = std::abs(wo.z);
@@ -680,7 +694,7 @@ TEST_CASE("T8.7 plastic sampling: a mixture of coat and base, whose pdf is the m
           "average to the albedo" *
           grading(3, "pick the coat with a probability P that depends on wo only (reuse u.x rescaled), sample its "
                      "visible normals or the cosine lobe, and return pdf = P pdf_coat + (1 - P) pdf_base for the "
-                     "direction drawn, whichever lobe drew it; plasticPdf the same")) {
+                     "direction drawn, whichever lobe drew it; plasticPdf the same, and 0 below the surface")) {
   uint32_t stream = 300;
   for (float roughness : kRoughnesses) {
     const double a = alphaOf(roughness);

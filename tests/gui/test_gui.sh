@@ -139,35 +139,20 @@ xrun "$gui" --panel 7 --screenshot "$out/panel7.png" > /dev/null 2>&1 || fail "-
 
 # 3. Every panel on the student files (the untouched stubs in the course
 # repository): no crash, the TODOs of undone tasks flagged, none of done ones.
-cat > "$out/stubs.txt" << 'SCRIPT'
-panel 1
-wait-panel
-panel 2
-wait-panel
-panel 3
-view traversal
-wait-panel
-panel 4
-view shadow-rays
-wait-panel
-panel 5
-view paths
-wait-panel
-panel 6
-wait-panel
-panel 7
-wait-panel
-panel 8
-view curves
-wait-panel
-lab environment
-wait-panel
-click 10 10
-wait
-screenshot OUT/stubs.png
-quit
-SCRIPT
-sed -i "s|OUT|$out|g" "$out/stubs.txt"
+# Each task's panel, with the view that runs most of its student code.
+extra_view() {
+  case $1 in
+    3) echo "view traversal" ;; 4) echo "view shadow-rays" ;; 5) echo "view paths" ;; 8) echo "view curves" ;;
+  esac
+}
+{
+  for n in $(seq "$task_count"); do
+    echo "panel $n"
+    extra_view "$n"
+    echo "wait-panel"
+  done
+  printf '%s\n' "lab environment" "wait-panel" "click 10 10" "wait" "screenshot $out/stubs.png" "quit"
+} > "$out/stubs.txt"
 if ! xrun "$stubs" --script "$out/stubs.txt" --timeout 300 > "$out/stubs.log" 2> "$out/stubs.err"; then
   fail "the stubs session exited with $?"; tail -5 "$out/stubs.err"
 fi

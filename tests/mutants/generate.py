@@ -200,6 +200,11 @@ MUTANTS = [
      [("  return 0.5f * (std::sqrt(1.0f + alpha * alpha * tan2) - 1.0f);", "  return std::sqrt(1.0f + alpha * alpha * tan2) - 1.0f;")]),
     (8, "d-without-pi", "D without the 1/pi: not normalised",
      [("  return a2 / (kPi * t * t);", "  return a2 / (t * t);")]),
+    # Blender 3.4's Cycles uses this form (docs/microfacet-validation.md); the
+    # handout asks for the height-correlated G2 and says why.
+    (8, "separable-g2", "the separable G1(wo) G1(wi) where the handout asks for the height-correlated G2",
+     [("  return 1.0f / (1.0f + smithLambda(wo, alpha) + smithLambda(wi, alpha));",
+       "  return 1.0f / ((1.0f + smithLambda(wo, alpha)) * (1.0f + smithLambda(wi, alpha)));")]),
 ]
 
 ALTERNATES = [

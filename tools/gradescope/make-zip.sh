@@ -11,7 +11,9 @@
 set -euo pipefail
 usage="usage: make-zip.sh OUT.zip [--timeout SECONDS] [--tasks 1,2,...]"
 out=$(realpath "${1:?$usage}"); shift
-timeout=600 tasks=1,2,3,4,5,6,7
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+timeout=600 tasks=$(python3 "$root/tools/pathlab_tasks.py" core)
 while (($#)); do
   case $1 in
     --timeout) timeout=${2:?$usage}; shift 2 ;;
@@ -20,8 +22,6 @@ while (($#)); do
   esac
 done
 [[ $timeout =~ ^[0-9]+$ ]] && ((timeout >= 180)) || { echo "make-zip.sh: --timeout must be at least 180 seconds, got $timeout" >&2; exit 2; }
-here=$(cd "$(dirname "$0")" && pwd)
-root=$(cd "$here/../.." && pwd)
 for t in ${tasks//,/ }; do
   [[ $t =~ ^[0-9]+$ && -n $(compgen -G "$root/tasks/$(printf %02d "$t")-*") ]] ||
     { echo "make-zip.sh: --tasks names task $t, which tasks/ does not have" >&2; exit 2; }
