@@ -26,8 +26,9 @@ def main() -> int:
         failures.append(f"paired runs failed (exit {done.returncode}): {done.stderr.strip()}")
     out = done.stdout
     runs = re.findall(r"^run \d \S+: ([0-9.]+) CPU us/sample, 1024 spp in ([0-9.]+) s$", out, re.M)
-    if len(runs) != 4 or not all(float(a) > 0 and float(b) > 0 for a, b in runs):
-        failures.append(f"expected 4 run lines with positive numbers:\n{out}")
+    # CPU time is positive; the projection may print 0.0 s (the stubs of a student release render in no time).
+    if len(runs) != 4 or not all(float(a) > 0 and float(b) >= 0 for a, b in runs):
+        failures.append(f"expected 4 run lines with positive CPU times:\n{out}")
     if len(re.findall(r"^  CPU us/sample: median [0-9.e+-]+  \(range [0-9.e+-]+ \.\. [0-9.e+-]+\)$", out, re.M)) != 2:
         failures.append(f"expected an old and a new summary:\n{out}")
     ratio = re.search(r"^speed-up \(old / new CPU time per sample, medians\): ([0-9.]+)x$", out, re.M)

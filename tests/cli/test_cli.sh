@@ -68,6 +68,7 @@ if command -v readelf > /dev/null && readelf -h "$pathlab" > /dev/null 2>&1; the
 fi
 out=$(PATHLAB_IMAGE_CODEC="$work/no-such-codec.so" "$pathlab" -q -s 1 -d 8x8 -o "$work/no-codec.png" 2>&1)
 rc=$?
+out=$(grep -v '^task [0-9]' <<< "$out")  # a student build's notes on undone tasks come first
 [[ $rc -eq 1 && $(wc -l <<< "$out") -eq 1 && $out == *"image codec"*"no-such-codec.so"* ]] && pass ||
   fail "a codec that does not load: exit $rc, expected 1 and one line naming it: $out"
 

@@ -102,10 +102,18 @@ if ! xrun "$gui" --script "$out/session.txt" --timeout 300 > "$out/session.log" 
   fail "scripted session exited with $?"; cat "$out/session.err"
 fi
 grep -q "click 140 200 -> pixel 140,200: 16 samples" "$out/session.log" || fail "the click was not inspected"
-for warp in $warps; do
+# A warp that runs a task's routine (lab --list's second column: T<n>...)
+# is ACCEPTED by default once that task is done (a student release's stubs
+# are rejected, rightly); the seed warps are the framework's own.
+while read -r warp tag _; do
+  n=${tag#T} n=${n%%.*}
+  if [[ $tag == T* ]] && ! done_in "$gui" "$n"; then
+    echo "skipped: the lab's $warp runs task $n, undone in $(basename "$gui")"
+    continue
+  fi
   grep -q "script: lab-verdict -> $warp: ACCEPTED" "$out/session.log" ||
     fail "the lab tab with every default does not show $warp ACCEPTED: $(grep "lab-verdict -> $warp:" "$out/session.log")"
-done
+done < <("$build/pathlab" lab --list)
 grep -q "no-such-map.exr: cannot open" "$out/session.err" || fail "a missing map file in the lab was not reported"
 for f in panel1 paths-front paths-side lab lab-mistake lab-map; do
   [[ -s $out/$f.png ]] || { fail "no screenshot $f.png"; continue; }
