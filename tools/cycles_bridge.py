@@ -30,6 +30,7 @@ import sys
 
 import bpy
 import numpy as np
+from mathutils import Matrix, Vector
 
 
 def to_blender(p):
@@ -139,20 +140,18 @@ def add_world(environment):
     links.new(texture.outputs["Color"], background.inputs["Color"])
 
 
-def add_camera(camera, width, height):
+def add_camera(camera):
     data = bpy.data.cameras.new("camera")
     data.sensor_fit = "VERTICAL"
     data.angle_y = math.radians(camera.get("vfov", 40.0))
     obj = bpy.data.objects.new("camera", data)
     bpy.context.scene.collection.objects.link(obj)
-    from mathutils import Vector
     eye = Vector(to_blender(camera.get("position", [0, 0, 0])))
     target = Vector(to_blender(camera.get("look_at", [0, 0, -1])))
     up = Vector(to_blender(camera.get("up", [0, 1, 0]))).normalized()
     forward = (target - eye).normalized()
     right = forward.cross(up).normalized()
     true_up = right.cross(forward)
-    from mathutils import Matrix
     rotation = Matrix((right, true_up, -forward)).transposed()  # columns: camera x, y, z
     obj.matrix_world = Matrix.Translation(eye) @ rotation.to_4x4()
     bpy.context.scene.camera = obj
@@ -187,7 +186,7 @@ def render(scene_path, out_path, spp, seed, max_bounces):
     scene.render.image_settings.file_format = "OPEN_EXR"
     scene.render.image_settings.color_depth = "32"
     scene.render.image_settings.exr_codec = "ZIP"
-    add_camera(spec.get("camera", {}), scene.render.resolution_x, scene.render.resolution_y)
+    add_camera(spec.get("camera", {}))
     materials = {name: scene_material(name, m) for name, m in spec.get("materials", {}).items()}
     if "default" not in materials:
         materials["default"] = scene_material("default", {"albedo": [0.5, 0.5, 0.5]})

@@ -61,7 +61,7 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, Vec2 u) const {
     s.isDelta = true;
     return s;
   }
-  if (material_.type == MaterialType::RoughConductor || material_.type == MaterialType::RoughPlastic) {
+  if (material_.isRough()) {
     const Vec3 woLocal = frame_.toLocal(wo);
     std::optional<BsdfSample> s = material_.type == MaterialType::RoughConductor
                                       ? lobes_->sampleConductor(woLocal, u, material_.roughConductor())

@@ -25,7 +25,7 @@ class Bsdf {
   // The shading normal, on the side of wo.
   const Vec3& normal() const { return frame_.n; }
   const Frame& frame() const { return frame_; }
-  bool isDelta() const { return material_.type == MaterialType::Mirror || material_.type == MaterialType::Glass; }
+  bool isDelta() const { return material_.isDelta(); }
 
   // f(wo, wi) for world-space unit directions; 0 for delta lobes.
   Color f(const Vec3& wo, const Vec3& wi) const;

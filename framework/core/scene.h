@@ -44,6 +44,10 @@ struct Material {
   Color eta{0.0f}, k{0.0f};    // conductor: the complex index of refraction eta + i k, per channel
 
   bool isEmissive() const { return maxComponent(emission) > 0.0f; }
+  // Mirror and glass: one direction per sample (task 6).
+  bool isDelta() const { return type == MaterialType::Mirror || type == MaterialType::Glass; }
+  // Rough conductor and rough plastic: GGX lobes (task 8).
+  bool isRough() const { return type == MaterialType::RoughConductor || type == MaterialType::RoughPlastic; }
   // The parameters task 8's functions take, for a rough conductor or plastic.
   RoughConductor roughConductor() const { return RoughConductor{roughness, albedo, exactFresnel, eta, k}; }
   RoughPlastic roughPlastic() const { return RoughPlastic{roughness, albedo, ior}; }

@@ -17,7 +17,6 @@ std::string format(const char* pattern, auto... values) {
 
 std::string vec(const Vec3& v) { return format("(%.3f, %.3f, %.3f)", double(v.x), double(v.y), double(v.z)); }
 
-
 std::string describeHit(const Scene& scene, const TracedRay& traced) {
   if (!traced.hit) return "missed: background";
   const Hit& hit = traced.record;

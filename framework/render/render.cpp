@@ -37,16 +37,9 @@ std::string tasksLightingRender(const Scene& scene, Integrator integrator) {
   if (integrator == Integrator::Path) tasks.push_back(5);
   const bool lit = integrator == Integrator::Path || integrator == Integrator::Direct;
   auto has = [&](auto predicate) { return std::any_of(scene.materials.begin(), scene.materials.end(), predicate); };
-  if (integrator == Integrator::Path &&
-      has([](const Material& m) { return m.type == MaterialType::Mirror || m.type == MaterialType::Glass; })) {
-    tasks.push_back(6);
-  }
+  if (integrator == Integrator::Path && has([](const Material& m) { return m.isDelta(); })) tasks.push_back(6);
   if (lit && scene.environment && !scene.environment->image.pixels.empty()) tasks.push_back(7);
-  if (lit && has([](const Material& m) {
-        return m.type == MaterialType::RoughConductor || m.type == MaterialType::RoughPlastic;
-      })) {
-    tasks.push_back(8);
-  }
+  if (lit && has([](const Material& m) { return m.isRough(); })) tasks.push_back(8);
   // Runs of consecutive tasks as "a-b".
   std::string text;
   for (size_t i = 0; i < tasks.size();) {

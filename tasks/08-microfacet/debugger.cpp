@@ -45,7 +45,7 @@ Inspected inspect(const DebugViewRequest& request) {
     if (glm::dot(n, -ray.direction) < 0.0f) n = -n;
     result.wo = Frame::fromNormal(n).toLocal(-ray.direction);
     const Material& m = scene.materials[hit->material];
-    if (m.type == MaterialType::RoughConductor || m.type == MaterialType::RoughPlastic) {
+    if (m.isRough()) {
       result.material = m;
       result.what = std::string(materialTypeName(m.type)) + " \"" + m.name + "\"";
     }
