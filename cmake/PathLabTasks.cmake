@@ -36,6 +36,39 @@ foreach(folder IN LISTS _pathlab_task_folders)
 endforeach()
 list(LENGTH PATHLAB_TASK_NAMES PATHLAB_TASK_COUNT)
 
+# The tasks the course hands out, PATHLAB_HANDED_OUT (numbers): a student
+# release lists them in tasks/handed-out.txt (tools/make-student-release
+# --tasks; comma-separated, '#' starts a comment); the course repository has
+# no such file and hands out every task. A task not handed out links the
+# reference (pathlab_task_variant) and has no suite.
+set(PATHLAB_HANDED_OUT "")
+if(EXISTS ${CMAKE_SOURCE_DIR}/tasks/handed-out.txt)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/tasks/handed-out.txt)
+  file(STRINGS ${CMAKE_SOURCE_DIR}/tasks/handed-out.txt _pathlab_lines)
+  foreach(line IN LISTS _pathlab_lines)
+    string(REGEX REPLACE "#.*" "" line "${line}")
+    string(REPLACE "," ";" numbers "${line}")
+    foreach(number IN LISTS numbers)
+      string(STRIP "${number}" number)
+      if(number STREQUAL "")
+        continue()
+      endif()
+      if(NOT number MATCHES "^[0-9]+$" OR number LESS 1 OR number GREATER PATHLAB_TASK_COUNT)
+        message(FATAL_ERROR "tasks/handed-out.txt: '${number}' is not a task number (1 to ${PATHLAB_TASK_COUNT})")
+      endif()
+      math(EXPR number "${number}")  # "08" -> 8
+      list(APPEND PATHLAB_HANDED_OUT ${number})
+    endforeach()
+  endforeach()
+  if(NOT PATHLAB_HANDED_OUT)
+    message(FATAL_ERROR "tasks/handed-out.txt lists no task")
+  endif()
+else()
+  foreach(n RANGE 1 ${PATHLAB_TASK_COUNT})
+    list(APPEND PATHLAB_HANDED_OUT ${n})
+  endforeach()
+endif()
+
 # Where the student files come from: tasks/ by default; a TA grading a
 # submission points PATHLAB_STUDENT_DIR at it (files either as the
 # tasks/NN-name/ tree or flat by file name). A task file missing from the
@@ -71,6 +104,12 @@ function(pathlab_add_tasks)
   else()
     pathlab_import_reference_objects(status)
   endif()
+  foreach(n RANGE 1 ${PATHLAB_TASK_COUNT})
+    if(NOT n IN_LIST PATHLAB_HANDED_OUT AND NOT TARGET pathlab_task${n}_reference)
+      message(STATUS "PathLab: task ${n} is not handed out in this course, and there is no compiled reference "
+                     "for it here: its stub stands in (scenes that need task ${n} render wrongly)")
+    endif()
+  endforeach()
   # Read by tools/check: where this build's reference comes from.
   set(PATHLAB_REFERENCE_STATUS "${status}" CACHE INTERNAL "Where the reference tasks come from")
   file(WRITE ${CMAKE_BINARY_DIR}/pathlab-reference.txt "${status}\n")
@@ -218,6 +257,9 @@ function(pathlab_task_variant n requested out)
   set(v ${requested})
   if(v STREQUAL selected)
     set(v ${PATHLAB_TASKS})
+    if(NOT n IN_LIST PATHLAB_HANDED_OUT)
+      set(v reference)  # not handed out in this course
+    endif()
     if(PATHLAB_TASK${n})
       set(v ${PATHLAB_TASK${n}})
     endif()

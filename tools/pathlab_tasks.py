@@ -2,7 +2,9 @@
 reads the same folders, cmake/PathLabTasks.cmake). Task NN's student file is
 tasks/NN-name/name.cpp with the name's dashes as underscores; its API header
 framework/tasks/name.h; its reference solutions/NN-name/name.cpp;
-its suite tests/NN-name/."""
+its suite tests/NN-name/. A student release lists the tasks its course
+hands out in tasks/handed-out.txt (tools/make-student-release --tasks); the
+others link the reference and have no suite there."""
 import re
 from pathlib import Path
 
@@ -32,6 +34,36 @@ def core_tasks() -> str:
     return ",".join(str(n) for n in range(1, CORE_TASK_COUNT + 1))
 
 
+# A student release's course list (written by tools/make-student-release --tasks,
+# read by CMake too: cmake/PathLabTasks.cmake). Absent in the course repository:
+# there every task is handed out.
+HANDED_OUT_FILE = "tasks/handed-out.txt"
+
+
+def parse_task_list(text: str, known, what: str = "--tasks") -> list:
+    """"1,2,8" -> [1, 2, 8]: sorted, each a known task number, at least one."""
+    try:
+        chosen = sorted({int(t) for t in text.split(",") if t.strip()})
+    except ValueError:
+        raise SystemExit(f"{what} '{text}': expected task numbers like 1,2,3")
+    if not chosen:
+        raise SystemExit(f"{what} '{text}': lists no task")
+    if not set(chosen) <= set(known):
+        raise SystemExit(f"{what} '{text}': the tasks are {min(known)} to {max(known)}")
+    return chosen
+
+
+def handed_out(root: Path = ROOT) -> list:
+    """The tasks this tree's course hands out: tasks/handed-out.txt (lines after
+    '#' are comments), or every task where there is no such file."""
+    every = tasks(root)
+    path = root / HANDED_OUT_FILE
+    if not path.is_file():
+        return sorted(every)
+    text = ",".join(line.partition("#")[0] for line in path.read_text().splitlines())
+    return parse_task_list(text, every, str(HANDED_OUT_FILE))
+
+
 # Added to the compiler line of a task file graded as a submission (tools/grade,
 # tools/mutate; tests/CMakeLists.txt's validity candidates likewise): libstdc++'s
 # checks turn an empty std::optional dereferenced or an index past a vector's
@@ -39,8 +71,13 @@ def core_tasks() -> str:
 SUBMISSION_FLAGS = ["-D_GLIBCXX_ASSERTIONS"]
 
 
-if __name__ == "__main__":  # for shell scripts: pathlab_tasks.py core
+if __name__ == "__main__":  # for shell scripts: pathlab_tasks.py core | handed-out | check LIST
     import sys
-    if sys.argv[1:] != ["core"]:
-        raise SystemExit("usage: pathlab_tasks.py core")
-    print(core_tasks())
+    if sys.argv[1:] == ["core"]:
+        print(core_tasks())
+    elif sys.argv[1:] == ["handed-out"]:
+        print(",".join(map(str, handed_out())))
+    elif len(sys.argv) == 3 and sys.argv[1] == "check":
+        print(",".join(map(str, parse_task_list(sys.argv[2], tasks()))))
+    else:
+        raise SystemExit("usage: pathlab_tasks.py core | handed-out | check LIST")

@@ -6,10 +6,13 @@ layout and kept each one (WORK_DIR/gradescope-results/KIND/, the files as
 handed in) with its results.json (KIND.json): the reference solutions, the
 stubs, five mutants and two alternates. Here the student release is made
 (tools/make-student-release --no-check --worktree: no solutions/, no grader, the
-reference compiled into reference-objects/) and, inside it, tools/check
+reference compiled into reference-objects/; the default course, the seven core
+tasks, while the zip grades every task) and, inside it, tools/check
 grades each of those submissions as a student would run it. For every
-submission: the same tests, each with the same score and points, the same
-total; and the check says it linked the compiled reference. Also: the
+submission: on the tasks the release hands out, the same tests, each with
+the same score and points, the same total; and the check says it linked
+the compiled reference. A task the release does not hand out has no suite
+there, and the check refuses it by name. Also: the
 release holds no solutions/ and no tools/grade; a task file that includes
 a file outside the framework's headers, or that links only with the
 student's own other task (a helper in another task's file), loses that
@@ -22,6 +25,7 @@ runs beside gradescope-zip; the comparison runs once both are done.
 usage: test_check.py REPO_ROOT WORK_DIR [--prepare] [--keep]"""
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -34,6 +38,14 @@ prepare_only = "--prepare" in sys.argv[3:]
 graded = work_dir / "gradescope-results"
 work = work_dir / "student-check"
 release = work / "release"
+sys.path.insert(0, str(root / "tools"))
+import pathlab_tasks  # noqa: E402
+CORE = [int(n) for n in pathlab_tasks.core_tasks().split(",")]
+WITHHELD = [n for n in pathlab_tasks.tasks(root) if n not in CORE]  # the extensions: not handed out
+
+
+def task_of(test_name: str) -> int:
+    return int(re.match(r"Task (\d+):", test_name).group(1))
 
 
 def per_test(report):
@@ -64,6 +76,16 @@ def prepare() -> int:
     for absent in ("solutions", "tools/grade", "tests/mutants"):
         if (release / absent).exists():
             failures.append(f"the release has {absent}")
+    if pathlab_tasks.handed_out(release) != CORE:
+        failures.append(f"the release hands out {pathlab_tasks.handed_out(release)}, not the core tasks {CORE}")
+    every = pathlab_tasks.tasks(root)
+    for n in WITHHELD:
+        folder = every[n][0]
+        handout = (release / "tasks" / folder / "README.md").read_text()
+        if (release / "tests" / folder).exists() or "Not handed out in this course" not in handout or \
+                not (release / "tasks" / folder / every[n][1]).exists():
+            failures.append(f"task {n}, not handed out: its suite is in the release, its stub is not, or its "
+                            f"handout does not say so")
     if not list(release.glob("reference-objects/*/manifest.json")):
         failures.append("the release has no compiled reference (reference-objects/*/manifest.json)")
     # The check's build, as a student's first tools/check makes it (task 1 of the stubs), then every judge.
@@ -98,19 +120,27 @@ def main() -> int:
         if mine is None:
             failures.append(f"{kind}: tools/check wrote no results.json:\n{output[-2000:]}")
             continue
-        theirs, ours = per_test(gradescope), per_test(mine)
+        theirs = {n: v for n, v in per_test(gradescope).items() if task_of(n) in CORE}
+        ours = per_test(mine)
+        gradescope_score = sum(t["score"] for t in gradescope["tests"] if task_of(t["name"]) in CORE)
         differ = [(n, theirs.get(n), ours.get(n)) for n in sorted(set(theirs) | set(ours)) if theirs.get(n) != ours.get(n)]
-        print(f"{kind}: Gradescope {gradescope['score']:g}, tools/check {mine['score']:g} of "
+        print(f"{kind}: Gradescope {gradescope_score:g}, tools/check {mine['score']:g} of "
               f"{sum(t['max_score'] for t in mine['tests']):g}; {len(ours)} tests, {len(differ)} differ")
         for name, a, b in differ[:5]:
             failures.append(f"{kind}: {name}: Gradescope {a}, tools/check {b}")
-        if mine["score"] != gradescope["score"]:
-            failures.append(f"{kind}: total {mine['score']:g} against Gradescope's {gradescope['score']:g}")
+        if mine["score"] != gradescope_score:
+            failures.append(f"{kind}: total {mine['score']:g} against Gradescope's {gradescope_score:g} (tasks {CORE})")
         if "WARNING" in output or "compiled: reference-objects/" not in \
                 (release / "build-check/pathlab-reference.txt").read_text():
             failures.append(f"{kind}: the check did not link the compiled reference:\n{output[-1500:]}")
         if "Total" not in output:
             failures.append(f"{kind}: no table in the check's output:\n{output[-1500:]}")
+
+    # A task the release does not hand out: refused by name, not graded against a suite it lacks.
+    for n in WITHHELD:
+        code, output, _ = check(release / "tasks", work / f"withheld-{n}.json", ["--tasks", str(n)])
+        if code != 2 or f"task {n} is not handed out in this course" not in output:
+            failures.append(f"tools/check --tasks {n} (not handed out): exit {code}, not a refusal:\n{output[-800:]}")
 
     # The grader's include rule: a framework-internal path is refused, as on Gradescope.
     sneaky = work / "sneaky"
