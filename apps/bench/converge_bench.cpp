@@ -68,14 +68,20 @@ Strategy strategy(const std::string& name) {
     s.options.sampler = SampleSequence::Stratified;
     s.tasks = {4, 5};
     s.change = "jittered strata instead of Owen-scrambled Sobol points (the framework's sampler, --sampler stratified)";
-  } else if (name == "mis-balance") {
-    frameworkStrategy({.mis = MisHeuristic::Balance}, "MIS of light and BSDF samples, balance heuristic");
-  } else if (name == "mis-power") {
-    frameworkStrategy({.mis = MisHeuristic::Power}, "MIS of light and BSDF samples, power heuristic");
+  } else if (name == "light" || name == "bsdf" || name == "mis-balance" || name == "mis-power") {
+    // Task 9's tracePathMis: one light sample per vertex, the BSDF sample, or both weighted.
+    s.options.integrator = name == "light" ? Integrator::LightSampling
+                           : name == "bsdf" ? Integrator::BsdfSampling
+                           : name == "mis-balance" ? Integrator::MisBalance : Integrator::Mis;
+    s.tasks = {9};
+    s.change = name == "light"         ? "task 9's path tracer, one light sample per vertex alone"
+               : name == "bsdf"        ? "task 9's path tracer, the BSDF sample alone"
+               : name == "mis-balance" ? "task 9's path tracer, MIS of light and BSDF samples, balance heuristic"
+                                       : "task 9's path tracer, MIS of light and BSDF samples, power heuristic";
   } else {
     throw Error("--strategies: unknown strategy \"" + name +
-                "\" (reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, mis-balance, mis-power, env-importance, "
-                "env-uniform, independent, stratified)");
+                "\" (reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, light, bsdf, mis-balance, mis-power, "
+                "env-importance, env-uniform, independent, stratified)");
   }
   return s;
 }

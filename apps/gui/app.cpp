@@ -15,13 +15,19 @@
 namespace pathlab::gui {
 namespace {
 
-constexpr Integrator kIntegrators[] = {Integrator::Path, Integrator::Direct, Integrator::Preview, Integrator::Normals};
-constexpr const char* kIntegratorNames[] = {"path (tasks 4-8)", "direct (task 4)", "preview (tasks 1-3)",
-                                            "normals (tasks 1-2)"};
+constexpr Integrator kIntegrators[] = {Integrator::Path,          Integrator::Direct,       Integrator::Preview,
+                                       Integrator::Normals,       Integrator::Mis,          Integrator::MisBalance,
+                                       Integrator::LightSampling, Integrator::BsdfSampling};
+constexpr const char* kIntegratorNames[] = {"path (tasks 4-8)",       "direct (task 4)",
+                                            "preview (tasks 1-3)",    "normals (tasks 1-2)",
+                                            "mis (task 9, power)",    "mis-balance (task 9)",
+                                            "light (task 9, alone)", "bsdf (task 9, alone)"};
+static_assert(std::size(kIntegrators) == std::size(kIntegratorNames));
 constexpr const char* kTaskTitles[] = {"", "Camera rays", "Intersection", "BVH", "Direct lighting",
-                                       "Path tracing", "Mirror & glass", "Environment", "Rough materials"};
+                                       "Path tracing", "Mirror & glass", "Environment", "Rough materials",
+                                       "Multiple importance sampling"};
 constexpr const char* kTabNames[] = {"", "1 Camera", "2 Hits", "3 BVH", "4 Direct", "5 Paths", "6 Mirror/glass",
-                                     "7 Environment", "8 Rough"};
+                                     "7 Environment", "8 Rough", "9 MIS"};
 static_assert(std::size(kTaskTitles) == kTaskCount + 1 && std::size(kTabNames) == kTaskCount + 1,
               "a title and a tab name for every task folder (core/task_list.h)");
 constexpr int kInspectedSamples = 16;

@@ -129,7 +129,8 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   options.progress = !args.quiet;
   options.cancel = &cancel;
   auto integrator = integratorFromName(args.integrator);
-  if (!integrator) throw Error("--integrator: unknown integrator " + inQuotes(args.integrator) + " (path, direct, preview, normals)");
+  if (!integrator) throw Error("--integrator: unknown integrator " + inQuotes(args.integrator) +
+                               " (path, direct, preview, normals, mis, mis-balance, light, bsdf)");
   options.integrator = *integrator;
   options.traversal = defaultTraversal(linkedTaskSummary());
   if (!args.accel.empty()) {
@@ -272,7 +273,9 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel, std::atomic<b
   app.add_option("--ref", render.reference, "Reference image: print RMSE and relMSE after the render");
   app.add_option("--stats", render.stats, "Also write the render's numbers (time, samples/s, rays/s, NaN or Inf "
                                           "samples, settings, tasks) as JSON to this file");
-  app.add_option("--integrator", render.integrator, "path (default), direct (task 4 only), preview (eye light, tasks 1-3), normals");
+  app.add_option("--integrator", render.integrator,
+                 "path (default), direct (task 4 only), preview (eye light, tasks 1-3), normals; task 9: mis (power "
+                 "heuristic), mis-balance, light (one light sample per vertex alone), bsdf (BSDF sampling alone)");
   app.add_option("--accel", render.accel,
                  "How rays walk task 3's tree: task3 (your intersectClosest/intersectAny) or fast (the framework's "
                  "8-wide SIMD copy, the reference task 2's triangle and sphere tests and hit records; same hits); "

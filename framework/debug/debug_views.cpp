@@ -39,6 +39,7 @@ std::vector<DebugView> allDebugViews() {
   addMirrorGlassViews(views);
   addEnvironmentViews(views);
   addMicrofacetViews(views);
+  addMisViews(views);
   return views;
 }
 

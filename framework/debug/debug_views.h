@@ -80,5 +80,6 @@ void addPathTracingViews(std::vector<DebugView>& views);    // tasks/05-path-tra
 void addMirrorGlassViews(std::vector<DebugView>& views);    // tasks/06-mirror-glass/debugger.cpp
 void addEnvironmentViews(std::vector<DebugView>& views);    // tasks/07-environment/debugger.cpp
 void addMicrofacetViews(std::vector<DebugView>& views);     // tasks/08-microfacet/debugger.cpp
+void addMisViews(std::vector<DebugView>& views);            // tasks/09-mis/debugger.cpp
 
 }  // namespace pathlab

@@ -7,6 +7,7 @@
 
 #include "render/task_wiring.h"
 #include "tasks/direct_lighting.h"
+#include "tasks/mis.h"
 #include "tasks/path_tracing.h"
 #include "util/parallel.h"
 #include "util/progress.h"
@@ -18,7 +19,21 @@ std::optional<Integrator> integratorFromName(const std::string& name) {
   if (name == "direct") return Integrator::Direct;
   if (name == "preview") return Integrator::Preview;
   if (name == "normals") return Integrator::Normals;
+  if (name == "mis") return Integrator::Mis;
+  if (name == "mis-balance") return Integrator::MisBalance;
+  if (name == "light") return Integrator::LightSampling;
+  if (name == "bsdf") return Integrator::BsdfSampling;
   return std::nullopt;
+}
+
+std::optional<MisEstimator> misEstimatorOf(Integrator integrator) {
+  switch (integrator) {
+    case Integrator::Mis: return MisEstimator::Power;
+    case Integrator::MisBalance: return MisEstimator::Balance;
+    case Integrator::LightSampling: return MisEstimator::LightSampling;
+    case Integrator::BsdfSampling: return MisEstimator::BsdfSampling;
+    default: return std::nullopt;
+  }
 }
 
 const char* integratorName(Integrator integrator) {
@@ -27,19 +42,26 @@ const char* integratorName(Integrator integrator) {
     case Integrator::Direct: return "direct";
     case Integrator::Preview: return "preview";
     case Integrator::Normals: return "normals";
+    case Integrator::Mis:
+    case Integrator::MisBalance:
+    case Integrator::LightSampling:
+    case Integrator::BsdfSampling: return misEstimatorName(*misEstimatorOf(integrator));
   }
   return "?";
 }
 
 std::string tasksLightingRender(const Scene& scene, Integrator integrator) {
   std::vector<int> tasks = {1, 2, 3};
-  if (integrator == Integrator::Path || integrator == Integrator::Direct) tasks.push_back(4);
-  if (integrator == Integrator::Path) tasks.push_back(5);
-  const bool lit = integrator == Integrator::Path || integrator == Integrator::Direct;
+  const bool mis = misEstimatorOf(integrator).has_value();  // task 9, with task 4's ray offsets and light directions
+  const bool paths = integrator == Integrator::Path || mis;  // bounces: task 5's diffuse sampling
+  const bool lit = paths || integrator == Integrator::Direct;
+  if (lit) tasks.push_back(4);
+  if (paths) tasks.push_back(5);
   auto has = [&](auto predicate) { return std::any_of(scene.materials.begin(), scene.materials.end(), predicate); };
-  if (integrator == Integrator::Path && has([](const Material& m) { return m.isDelta(); })) tasks.push_back(6);
+  if (paths && has([](const Material& m) { return m.isDelta(); })) tasks.push_back(6);
   if (lit && scene.environment && !scene.environment->image.pixels.empty()) tasks.push_back(7);
   if (lit && has([](const Material& m) { return m.isRough(); })) tasks.push_back(8);
+  if (mis) tasks.push_back(9);
   // Runs of consecutive tasks as "a-b".
   std::string text;
   for (size_t i = 0; i < tasks.size();) {
@@ -91,6 +113,11 @@ Color estimateRadiance(TraceContext& context, const RenderOptions& options, cons
       const std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
       return hit ? 0.5f * (hit->shadingNormal + Vec3(1.0f)) : Color(0.0f);
     }
+    case Integrator::Mis:
+    case Integrator::MisBalance:
+    case Integrator::LightSampling:
+    case Integrator::BsdfSampling:
+      return tracePathMis(context, ray, sampler, misWeights(*misEstimatorOf(options.integrator)));
   }
   return Color(0.0f);
 }

@@ -29,7 +29,16 @@ enum class Integrator {
   Direct,   // emission + direct lighting at the first hit (task 4)
   Preview,  // eye light: albedo * |cos| + emission — needs tasks 1–3 only
   Normals,  // shading normal as colour
+  // Task 9's tracePathMis, with one light sample per vertex: combined with
+  // the BSDF sample by the power or the balance heuristic, or either alone.
+  Mis,
+  MisBalance,
+  LightSampling,
+  BsdfSampling,
 };
+
+// The weights an integrator gives task 9's tracePathMis; nothing for the others.
+std::optional<MisEstimator> misEstimatorOf(Integrator integrator);
 
 std::optional<Integrator> integratorFromName(const std::string& name);
 const char* integratorName(Integrator integrator);

@@ -10,29 +10,29 @@
 #pragma once
 
 #include "core/trace.h"
+#include "tasks/mis.h"
 #include "util/random.h"
 #include "util/ray.h"
 
 namespace pathlab {
 
-// Multiple importance sampling of light samples and BSDF samples (Veach):
-// a sample drawn with pdf p_a, where the other strategy would have drawn it
-// with pdf p_b, is weighted p_a / (p_a + p_b) (balance) or
-// p_a^2 / (p_a^2 + p_b^2) (power). None: light samples only, as in tasks 4-5
-// (the weight is 1).
-enum class MisHeuristic { None, Balance, Power };
-
-float misWeight(MisHeuristic heuristic, float pdfThis, float pdfOther);
-
 struct SamplingStrategy {
   bool lightSampling = true;   // next-event estimation; off: BSDF sampling only
   bool cosineSampling = true;  // diffuse bounces cosine-weighted; off: uniform hemisphere
-  MisHeuristic mis = MisHeuristic::None;  // combine light and BSDF samples (needs lightSampling)
   bool russianRoulette = true;  // end long paths at random from the third bounce (unbiased)
 
   // The course's recipe: what tracePath (task 5) does.
-  bool isRecipe() const { return lightSampling && cosineSampling && mis == MisHeuristic::None && russianRoulette; }
+  bool isRecipe() const { return lightSampling && cosineSampling && russianRoulette; }
 };
+
+// The estimators task 9's tracePathMis gives, by the weights it is handed:
+// one light sample per vertex alone, the BSDF sample alone, or both combined
+// by multiple importance sampling (Veach) with the balance or the power
+// heuristic (task 9's balanceHeuristic, powerHeuristic). The project's only MIS.
+enum class MisEstimator { LightSampling, BsdfSampling, Balance, Power };
+
+MisWeights misWeights(MisEstimator estimator);
+const char* misEstimatorName(MisEstimator estimator);
 
 // The radiance arriving along a camera ray, by `strategy`; honours
 // context.settings (maxDepth, lightSamples) as tracePath does.

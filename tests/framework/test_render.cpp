@@ -169,7 +169,7 @@ TEST_CASE("random: the sampler is uniform in [0, 1) and independent across dimen
   CHECK(a.next1D() == b.next1D());
 }
 
-TEST_CASE("strategies: every sampling strategy is unbiased (closed enclosure and sky furnace)") {
+TEST_CASE("strategies: every sampling strategy, and task 9's four estimators, are unbiased (closed enclosure and sky furnace)") {
   // Inside a closed enclosure of albedo 1/2 and emission 1/2, L = 1 exactly
   // (any closed shape: 320 triangles are enough); each strategy must agree
   // within 5 standard errors (false failure 5.7e-7). Paths stop after 16
@@ -190,15 +190,18 @@ TEST_CASE("strategies: every sampling strategy is unbiased (closed enclosure and
     const char* name;
     SamplingStrategy strategy;
     int lightSamples = 1;
+    std::optional<MisEstimator> mis;  // task 9's tracePathMis with these weights instead
   };
   const Case cases[] = {
-      {"recipe", {}},
-      {"mis-balance", {.mis = MisHeuristic::Balance}},
-      {"mis-power", {.mis = MisHeuristic::Power}},
-      {"mis-power, 4 light samples", {.mis = MisHeuristic::Power}, 4},
-      {"uniform-hemisphere", {.cosineSampling = false}},
-      {"no-nee", {.lightSampling = false}},
-      {"no-rr", {.russianRoulette = false}},
+      {"recipe", {}, 1, std::nullopt},
+      {"recipe, 4 light samples", {}, 4, std::nullopt},
+      {"uniform-hemisphere", {.cosineSampling = false}, 1, std::nullopt},
+      {"no-nee", {.lightSampling = false}, 1, std::nullopt},
+      {"no-rr", {.russianRoulette = false}, 1, std::nullopt},
+      {"task 9, mis-balance", {}, 1, MisEstimator::Balance},
+      {"task 9, mis-power", {}, 1, MisEstimator::Power},
+      {"task 9, light sampling alone", {}, 1, MisEstimator::LightSampling},
+      {"task 9, BSDF sampling alone", {}, 1, MisEstimator::BsdfSampling},
   };
   test::Rig insideRig(enclosure), skyRig(sky);
   for (const Case& strategy : cases) {
@@ -210,7 +213,8 @@ TEST_CASE("strategies: every sampling strategy is unbiased (closed enclosure and
         Sampler sampler(uint32_t(i), 0, test::testSeed(81));
         Ray ray = scene == 0 ? Ray{Point3(0.1f, 0.0f, -0.2f), Vec3(random.unitVector())}
                              : Ray{Point3(0.0f, 0.0f, 4.0f), Vec3(glm::normalize(random.inCube(0.6) - test::DVec3(0, 0, 4)))};
-        m.add(traceWithStrategy(context, ray, sampler, strategy.strategy).y);
+        m.add((strategy.mis ? tracePathMis(context, ray, sampler, misWeights(*strategy.mis))
+                            : traceWithStrategy(context, ray, sampler, strategy.strategy)).y);
       }
       const double expected = scene == 0 ? 1.0 : 0.4;
       CAPTURE(strategy.name);

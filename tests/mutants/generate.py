@@ -205,8 +205,41 @@ MUTANTS = [
     (8, "separable-g2", "the separable G1(wo) G1(wi) where the handout asks for the height-correlated G2",
      [("  return 1.0f / (1.0f + smithLambda(wo, alpha) + smithLambda(wi, alpha));",
        "  return 1.0f / ((1.0f + smithLambda(wo, alpha)) * (1.0f + smithLambda(wi, alpha)));")]),
+    (9, "unweighted-bsdf-emission", "emission a BSDF sample finds after a diffuse bounce added in full: counted twice",
+     [("      radiance += throughput * emitted * weights.bsdf(previousPdf, pdfLight);",
+       "      (void)pdfLight;\n      radiance += throughput * emitted;")]),
+    (9, "unweighted-light-sample", "the light sample added without its weight: counted twice",
+     [("      radiance += throughput * f * light->radiance * (cosSurface / light->pdf) *\n                      weights.light(light->pdf, bsdf.pdf(wo, light->wi));",
+       "      radiance += throughput * f * light->radiance * (cosSurface / light->pdf);")]),
+    (9, "weight-after-delta", "emission seen through a mirror or glass weighted as after a diffuse bounce",
+     [("    if (afterDelta) {\n      radiance += throughput * emitted;", "    if (bounce == 0) {\n      radiance += throughput * emitted;")]),
+    (9, "area-pdf-in-weight", "the light's density per unit area (1 / A) where the weight needs it per solid angle",
+     [("    return light ? choice * Lights::areaPdfSolidAngle(*light, from, *hit) : 0.0f;",
+       "    (void)from;\n    return light ? choice / light->area() : 0.0f;")]),
+    (9, "no-choice-probability", "the light's choice probability left out of both pdfs",
+     [("  const float choice = 1.0f / float(count);\n  const Vec2 uv(u.y, u.z);", "  const float choice = 1.0f;\n  const Vec2 uv(u.y, u.z);"),
+      ("  const float choice = 1.0f / float(count);\n  if (hit) {", "  const float choice = 1.0f;\n  if (hit) {")]),
+    (9, "no-choice-probability-in-sample", "the light's choice probability left out of the sample's pdf (oneLightPdf has it)",
+     [("  const float choice = 1.0f / float(count);\n  const Vec2 uv(u.y, u.z);", "  const float choice = 1.0f;\n  const Vec2 uv(u.y, u.z);")]),
+    (9, "stale-bsdf-pdf", "the first bounce's BSDF pdf and point kept for every later weight",
+     [("    previousPoint = hit->point;\n    previousPdf = sample->pdf;",
+       "    if (bounce == 0) {\n      previousPoint = hit->point;\n      previousPdf = sample->pdf;\n    }")]),
+    (9, "back-face-light-pdf", "a light's density from behind not 0 (|cos| at the light)",
+     [("    return light ? choice * Lights::areaPdfSolidAngle(*light, from, *hit) : 0.0f;",
+       "    (void)from;\n    if (!light) return 0.0f;\n    const float cosLight = std::abs(glm::dot(hit->geometricNormal, wi));\n"
+       "    return cosLight > 0.0f ? choice * hit->t * hit->t / (light->area() * cosLight) : 0.0f;")]),
+    (9, "uniform-sky-pdf", "the sky's density taken as uniform, 1 / (4 pi), though the map is importance-sampled",
+     [("  return lights.environment ? choice * lights.environment->pdf(wi) : 0.0f;",
+       "  (void)wi;\n  return lights.environment ? choice / (4.0f * kPi) : 0.0f;")]),
+    (9, "weights-swapped", "the light sample's weight asked with the two densities swapped",
+     [("weights.light(light->pdf, bsdf.pdf(wo, light->wi))", "weights.light(bsdf.pdf(wo, light->wi), light->pdf)")]),
+    (9, "naive-power", "the power heuristic as p^2 / (p^2 + q^2) in float: NaN past 1.8e19",
+     [("  if (pdfOther <= pdfThis) {\n    const float r = pdfOther / pdfThis;\n    return 1.0f / (1.0f + r * r);\n  }\n  const float r = pdfThis / pdfOther;\n  return r * r / (1.0f + r * r);",
+       "  return pdfThis * pdfThis / (pdfThis * pdfThis + pdfOther * pdfOther);")]),
+    (9, "balance-for-power", "the balance heuristic where the power heuristic is asked for",
+     [("  if (pdfOther <= pdfThis) {\n    const float r = pdfOther / pdfThis;\n    return 1.0f / (1.0f + r * r);\n  }\n  const float r = pdfThis / pdfOther;\n  return r * r / (1.0f + r * r);",
+       "  return pdfThis / (pdfThis + pdfOther);")]),
 ]
-
 ALTERNATES = [
     (1, "mirrored-jitter", "pixel + (1 - u): another uniform map onto the pixel",
      [("return Point2(pixel) + u;", "return Point2(pixel) + (Vec2(1.0f) - u);")]),
@@ -293,6 +326,26 @@ ALTERNATES = [
        "  // A direction on the spherical cap below v, added to v.\n  const float phi = 2.0f * kPi * u.x;\n  const float z = (1.0f - u.y) * (1.0f + v.z) - v.z;\n  const float sinTheta = std::sqrt(std::clamp(1.0f - z * z, 0.0f, 1.0f));\n  const Vec3 n = Vec3(sinTheta * std::cos(phi), sinTheta * std::sin(phi), z) + v;")]),
     (8, "even-mixture", "the plastic's two lobes each sampled half the time",
      [("  return std::clamp(coat / (coat + base), 0.1f, 0.9f);", "  (void)coat, (void)base;\n  return 0.5f;")]),
+    (9, "sky-chosen-half-the-time", "the sky chosen with probability 1/2, the area lights sharing the rest",
+     [("int lightCount(const Lights& lights) { return int(lights.areas.size()) + (lights.environment ? 1 : 0); }",
+       "int lightCount(const Lights& lights) { return int(lights.areas.size()) + (lights.environment ? 1 : 0); }\n\n"
+       "// The probability of choosing light k (the sky is k = areas): 1/2 for the sky when there are area lights too.\n"
+       "float choiceOf(const Lights& lights, int k) {\n"
+       "  const int areas = int(lights.areas.size());\n"
+       "  if (!lights.environment || areas == 0) return 1.0f / float(lightCount(lights));\n"
+       "  return k == areas ? 0.5f : 0.5f / float(areas);\n}"),
+      ("  const int chosen = std::min(int(u.x * float(count)), count - 1);\n  const float choice = 1.0f / float(count);",
+       "  const int areas = int(lights.areas.size());\n"
+       "  const int chosen = lights.environment && areas > 0\n"
+       "                         ? (u.x < 0.5f ? areas : std::min(int(u.x * 2.0f * float(areas)) - areas, areas - 1))\n"
+       "                         : std::min(int(u.x * float(count)), count - 1);\n"
+       "  const float choice = choiceOf(lights, chosen);"),
+      ("  const float choice = 1.0f / float(count);\n  if (hit) {\n    const AreaLight* light = lights.areaLightAt(context.scene, *hit);\n    return light ? choice * Lights::areaPdfSolidAngle(*light, from, *hit) : 0.0f;\n  }\n  return lights.environment ? choice * lights.environment->pdf(wi) : 0.0f;",
+       "  if (hit) {\n    const AreaLight* light = lights.areaLightAt(context.scene, *hit);\n    return light ? choiceOf(lights, 0) * Lights::areaPdfSolidAngle(*light, from, *hit) : 0.0f;\n  }\n"
+       "  return lights.environment ? choiceOf(lights, int(lights.areas.size())) * lights.environment->pdf(wi) : 0.0f;")]),
+    (9, "random-numbers-reordered", "the light sample's numbers drawn in the other order, the choice from the last one",
+     [("      const Vec2 u2 = sampler.next2D();\n      const std::optional<LightSample> light = sampleOneLight(context, hit->point, Vec3(sampler.next1D(), u2));",
+       "      const float u1 = sampler.next1D();\n      const Vec2 u2 = sampler.next2D();\n      const std::optional<LightSample> light = sampleOneLight(context, hit->point, Vec3(u2.y, u1, u2.x));")]),
 ]
 
 

@@ -4,18 +4,32 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
 #include <random>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "util/math.h"
 
 namespace pathlab::test {
 
 using DVec3 = glm::dvec3;
+
+// Irradiance at x (normal n) from a uniform, fully visible polygon of
+// radiance 1 (Lambert): E = 1/2 sum_i angle(v_i, v_i+1) n . normalize(v_i x v_i+1).
+inline double polygonIrradiance(const DVec3& x, const DVec3& n, const std::vector<DVec3>& polygon) {
+  double sum = 0.0;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    DVec3 a = glm::normalize(polygon[i] - x), b = glm::normalize(polygon[(i + 1) % polygon.size()] - x);
+    double angle = std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0));
+    sum += angle * glm::dot(n, glm::normalize(glm::cross(a, b)));
+  }
+  return 0.5 * std::abs(sum);
+}
 
 inline std::string str(const Vec3& v) {
   std::ostringstream s;
