@@ -71,6 +71,7 @@ EnvironmentLight::EnvironmentLight(const Environment& environment, EnvironmentSa
 }
 
 Color EnvironmentLight::pixelRadiance(const Vec3& w) const {
+  if (!hasMap()) return radiance(w);  // a constant sky: its colour is what lighting integrates
   const Image& map = environment_->image;
   const Point2 uv = map_.directionToEquirect(w);
   const int i = std::clamp(int(uv.x * float(map.width)), 0, map.width - 1);

@@ -73,7 +73,7 @@ class EnvironmentLight {
 
   // Radiance seen along the unit direction w (bilinear for maps).
   Color radiance(const Vec3& w) const;
-  // The map's pixel value along w, what lighting integrates.
+  // The map's pixel value along w (a constant sky: its colour), what lighting integrates.
   Color pixelRadiance(const Vec3& w) const;
   std::optional<EnvironmentLightSample> sample(Vec2 u) const;
   float pdf(const Vec3& w) const;
