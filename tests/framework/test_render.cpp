@@ -169,6 +169,23 @@ TEST_CASE("random: the sampler is uniform in [0, 1) and independent across dimen
   CHECK(a.next1D() == b.next1D());
 }
 
+TEST_CASE("lights: a constant sky's pixel radiance is its colour, in every direction") {
+  // pixelRadiance is what lighting integrates; without a map there is no
+  // pixel to read (it read outside an empty image before).
+  Scene scene;
+  scene.environment = Environment{};
+  scene.environment->color = Color(0.3f, 0.5f, 0.7f);
+  scene.environment->scale = 2.0f;
+  const Lights lights = Lights::fromScene(scene, kLinkedTasks.environment);
+  REQUIRE(lights.environment.has_value());
+  test::Random random(17);
+  for (int i = 0; i < 100; ++i) {
+    const Vec3 w(random.unitVector());
+    CHECK(lights.environment->pixelRadiance(w) == Color(0.6f, 1.0f, 1.4f));
+    CHECK(lights.environment->radiance(w) == Color(0.6f, 1.0f, 1.4f));
+  }
+}
+
 TEST_CASE("strategies: every sampling strategy, and task 9's four estimators, are unbiased (closed enclosure and sky furnace)") {
   // Inside a closed enclosure of albedo 1/2 and emission 1/2, L = 1 exactly
   // (any closed shape: 320 triangles are enough); each strategy must agree
