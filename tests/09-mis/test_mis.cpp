@@ -501,61 +501,81 @@ Scene platesScene(int width, int height, int spp, const PlatesSetup& setup = kVe
 
 }  // namespace
 
-TEST_CASE("T9.3 path tracer: on Veach's plates MIS is nowhere much noisier than the better of light and BSDF sampling" *
-          grading(3, "each strategy's sample must keep its weight: MIS with the power heuristic has, region by "
-                     "region, at most 1.25 times the variance of the better strategy alone; more means a weight "
-                     "that does not favour the strategy whose pdf is larger there")) {
-  // Each plate under each light: a 4 x 4 grid of regions over the plates. Veach's lights and plates made
-  // milder (radii 0.1 to 0.8, roughness 0.1 to 0.4), so that every region's variance is finite and
-  // measured well: both failures remain (light sampling on the smooth plate under the big light, BSDF
-  // sampling on the rough plate under the small one).
+TEST_CASE("T9.3 path tracer: on Veach's plates MIS is as good as the strategy that works, where the other fails" *
+          grading(3, "where light sampling fails (a smooth plate under a big light) MIS must be about as good as "
+                     "BSDF sampling, and where BSDF sampling fails (a rough plate under a small light) about as "
+                     "good as light sampling: a weight that does not favour the strategy whose pdf is larger "
+                     "keeps the failing strategy's fireflies")) {
+  // Veach's plates made milder (radii 0.1 to 0.8, roughness 0.1 to 0.4), so
+  // that the strategy that works has a variance measured well. A cell is a
+  // plate (by the camera ray's first hit) under a light (the image's
+  // quarter). Only the cells where one strategy fails are judged, and only
+  // against the other: a failing strategy's variance is heavy-tailed (light
+  // sampling on the smooth plate under the big light: over 60 seeds its
+  // sample variance ranged from 6.8 to 12,000, median 476), so a lucky
+  // sample can make it look best, and "the smaller of the two" would judge
+  // MIS against noise. Measured over seeds 1-300: MIS / the strategy that
+  // works has mean 1.034, 1.042, 0.994 and 0.89 in the four cells (the power
+  // heuristic keeps a little of the failing strategy), at most 1.112, with
+  // standard deviations up to 0.029; 1.2 is 5.4 of them above the worst mean.
   constexpr PlatesSetup kMild{{0.1f, 0.2f, 0.3f, 0.4f}, {0.1f, 0.2f, 0.4f, 0.8f}};
-  constexpr int kWidth = 32, kHeight = 24, kSamples = 256;
+  constexpr int kWidth = 96, kHeight = 72, kSamples = 128;
   const Scene scene = platesScene(kWidth, kHeight, kSamples, kMild);
   const Rig rig(scene);
   TraceContext context = rig.context(1, 1);
   const CameraBasis basis = cameraBasis(scene.camera);
+  // The judged cells (plate 0 is the smoothest, light 0 the smallest) and
+  // the strategy that works there.
+  struct Cell {
+    int plate, light;
+    MisEstimator works;
+  };
+  const Cell cells[] = {{0, 3, MisEstimator::BsdfSampling}, {0, 2, MisEstimator::BsdfSampling},
+                        {3, 0, MisEstimator::LightSampling}, {2, 0, MisEstimator::LightSampling}};
   std::vector<calls::PathQuery> queries;
-  std::vector<int> regionOf;
+  std::vector<int> cellOf;  // per pixel: index into cells, or -1
   Random random(103);
   for (int y = 0; y < kHeight; ++y) {
     for (int x = 0; x < kWidth; ++x) {
+      const Ray centre = generateCameraRay(scene.camera, basis, Point2(float(x) + 0.5f, float(y) + 0.5f), {kWidth, kHeight});
+      const std::optional<Hit> hit = context.intersect(centre, Interval{0.0f, kInfinity});
+      int cell = -1;
+      for (size_t c = 0; c < std::size(cells); ++c) {
+        if (hit && int(hit->material) == cells[c].plate && x * 4 / kWidth == cells[c].light) cell = int(c);
+      }
+      cellOf.push_back(cell);
       for (int s = 0; s < kSamples; ++s) {
         const Point2 raster(float(x) + float(random.uniform(0.0, 1.0)), float(y) + float(random.uniform(0.0, 1.0)));
         queries.emplace_back(generateCameraRay(scene.camera, basis, raster, {kWidth, kHeight}),
                              uint32_t((y * kWidth + x) * kSamples + s), testSeed(103));
       }
-      regionOf.push_back((y * 4 / kHeight) * 4 + x * 4 / kWidth);
     }
   }
-  // Per region: the mean of the pixels' sample variances, and the region's mean, per estimator.
-  auto regionStats = [&](MisEstimator e) {
+  // Per cell, the mean of its pixels' sample variances, per estimator.
+  auto cellVariances = [&](MisEstimator e) {
     const std::vector<Color> radiance = candidate::tracePathsMis(context, e, queries);
-    std::vector<MeanEstimate> variance(16), mean(16);
-    for (size_t pixel = 0; pixel < regionOf.size(); ++pixel) {
+    std::vector<MeanEstimate> variance(std::size(cells));
+    for (size_t pixel = 0; pixel < cellOf.size(); ++pixel) {
+      if (cellOf[pixel] < 0) continue;
       MeanEstimate m;
       for (int s = 0; s < kSamples; ++s) m.add(double(radiance[pixel * kSamples + size_t(s)].y));
-      variance[size_t(regionOf[pixel])].add(m.variance());
-      mean[size_t(regionOf[pixel])].add(m.mean());
+      variance[size_t(cellOf[pixel])].add(m.variance());
     }
-    return std::pair(variance, mean);
+    return variance;
   };
-  const auto [lightVar, lightMean] = regionStats(MisEstimator::LightSampling);
-  const auto [bsdfVar, bsdfMean] = regionStats(MisEstimator::BsdfSampling);
-  const auto [misVar, misMean] = regionStats(MisEstimator::Power);
-  int lit = 0;
-  for (size_t r = 0; r < 16; ++r) {
-    const double best = std::min(lightVar[r].mean(), bsdfVar[r].mean());
-    if (!(std::max(lightMean[r].mean(), misMean[r].mean()) > 1e-3)) continue;  // no plate, no light here
-    ++lit;
-    CAPTURE(r);
-    INFO("variance per sample: light " << lightVar[r].mean() << ", BSDF " << bsdfVar[r].mean() << ", MIS "
-                                       << misVar[r].mean() << "; means " << lightMean[r].mean() << ", "
-                                       << bsdfMean[r].mean() << ", " << misMean[r].mean());
-    MESSAGE("region " << r << " light " << lightVar[r].mean() << " bsdf " << bsdfVar[r].mean() << " mis " << misVar[r].mean() << " ratio " << misVar[r].mean() / best << " means " << lightMean[r].mean() << " " << bsdfMean[r].mean() << " " << misMean[r].mean());
-    CHECK(misVar[r].mean() <= 1.25 * best);
+  const std::vector<MeanEstimate> light = cellVariances(MisEstimator::LightSampling);
+  const std::vector<MeanEstimate> bsdf = cellVariances(MisEstimator::BsdfSampling);
+  const std::vector<MeanEstimate> mis = cellVariances(MisEstimator::Power);
+  for (size_t c = 0; c < std::size(cells); ++c) {
+    const double works = cells[c].works == MisEstimator::LightSampling ? light[c].mean() : bsdf[c].mean();
+    CAPTURE(c);
+    INFO("plate " << cells[c].plate << " under light " << cells[c].light << " (" << bsdf[c].count()
+                  << " pixels): variance per sample, light sampling " << light[c].mean() << ", BSDF sampling "
+                  << bsdf[c].mean() << ", MIS " << mis[c].mean() << "; " << misEstimatorName(cells[c].works)
+                  << " is the strategy that works here");
+    CHECK(bsdf[c].count() >= 4);
+    CHECK(mis[c].mean() <= 1.2 * works);
   }
-  CHECK(lit >= 8);
 }
 
 TEST_CASE("T9.3 image: Veach's plates, and glossy spheres under a sunny sky, by MIS" *
