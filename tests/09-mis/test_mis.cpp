@@ -419,12 +419,21 @@ namespace {
 // The albedo of a white GGX mirror (F = 1, height-correlated Smith) seen
 // from wo.z = cosTheta: the integral of f cos over the hemisphere, by
 // quadrature in double (independent of the reference).
-double ggxWhiteAlbedo(double cosTheta, double alpha) {
+// f(wo, wi) of a white GGX mirror (F = 1, height-correlated Smith) in the
+// local frame, in double: D G2 / (4 cos_o cos_i).
+double ggxWhiteBrdf(const DVec3& wo, const DVec3& wi, double alpha) {
   const double a2 = alpha * alpha;
   auto lambda = [&](double c) {
     const double t2 = (1.0 - c * c) / (c * c);
     return (-1.0 + std::sqrt(1.0 + a2 * t2)) / 2.0;
   };
+  const DVec3 h = glm::normalize(wo + wi);
+  const double d = a2 / (std::numbers::pi * std::pow((a2 - 1.0) * h.z * h.z + 1.0, 2.0));
+  const double g = 1.0 / (1.0 + lambda(wo.z) + lambda(wi.z));
+  return d * g / (4.0 * wo.z * wi.z);
+}
+
+double ggxWhiteAlbedo(double cosTheta, double alpha) {
   const DVec3 wo(std::sqrt(1.0 - cosTheta * cosTheta), 0.0, cosTheta);
   constexpr int kTheta = 1200, kPhi = 600;
   double sum = 0.0;
@@ -433,12 +442,7 @@ double ggxWhiteAlbedo(double cosTheta, double alpha) {
     for (int j = 0; j < kPhi; ++j) {
       const double phi = (j + 0.5) / kPhi * 2.0 * std::numbers::pi;
       const DVec3 wi(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
-      const DVec3 h = glm::normalize(wo + wi);
-      const double c2 = h.z * h.z;
-      const double d = a2 / (std::numbers::pi * std::pow((a2 - 1.0) * c2 + 1.0, 2.0));
-      const double g = 1.0 / (1.0 + lambda(wo.z) + lambda(wi.z));
-      const double f = d * g / (4.0 * wo.z * wi.z);
-      sum += f * wi.z * std::sin(theta);
+      sum += ggxWhiteBrdf(wo, wi, alpha) * wi.z * std::sin(theta);
     }
   }
   return sum * (std::numbers::pi / 2.0 / kTheta) * (2.0 * std::numbers::pi / kPhi);
@@ -476,6 +480,67 @@ TEST_CASE("T9.3 path tracer: a white rough mirror under a constant sky reflects 
       CHECK(m.agrees(expected));
     }
   }
+}
+
+TEST_CASE("T9.3 path tracer: a point light over a white rough mirror gives f I cos / d^2 exactly" *
+          grading(1, "a point light adds f(wo, wi) I cos(theta_i) / d^2 with wi the unit direction to the light "
+                     "(toLight / d, not / d^2) and wo towards the viewer: the lobe is not symmetric in them")) {
+  constexpr float kRoughness = 0.5f;
+  Scene scene;
+  Material mirror{.name = "white rough mirror", .type = MaterialType::RoughConductor, .albedo = Color(1.0f),
+                  .roughness = kRoughness};
+  scene.materials.push_back(mirror);
+  addQuad(scene, {-50, 0, 50}, {100, 0, 0}, {0, 0, -100}, 0);
+  const Point3 lamp(0.6f, 2.0f, -0.3f);
+  scene.pointLights.push_back(PointLight{lamp, Color(5.0f)});
+  const Rig rig(std::move(scene));
+  TraceContext context = rig.context(1, 1);
+  const Point3 target(-0.4f, 0.0f, 0.2f);
+  const Point3 eye(-2.0f, 1.0f, 1.5f);
+  const std::vector<Ray> rays(16, Ray{eye, glm::normalize(target - eye)});
+  const DVec3 wo = glm::normalize(DVec3(eye) - DVec3(target)), toLight = DVec3(lamp) - DVec3(target);
+  const DVec3 wi = glm::normalize(toLight);
+  // The plane's local frame: the normal is +y; the BRDF depends on the angles only.
+  auto local = [](const DVec3& w) { return DVec3(w.x, w.z, w.y); };
+  const double expected = ggxWhiteBrdf(local(wo), local(wi), double(kRoughness) * kRoughness) * 5.0 * wi.y /
+                          glm::dot(toLight, toLight);
+  for (MisEstimator e : {MisEstimator::LightSampling, MisEstimator::Power, MisEstimator::Balance}) {
+    const MeanEstimate m = misMean(context, e, rays, 106);
+    CAPTURE(nameOf(e));
+    INFO("mean " << m.mean() << ", expected " << expected);
+    CHECK(m.mean() == doctest::Approx(expected).epsilon(2e-3));
+  }
+}
+
+TEST_CASE("T9.3 path tracer: -m counts bounces, and Russian roulette keeps light above 1 (glass) unbiased" *
+          grading(1, "stop when bounce >= maxDepth before light sampling, as task 5; continue with probability "
+                     "q = min(0.95, max component of the throughput) and divide by q")) {
+  const Rig rig(closedEnclosure(0.5f, 0.5f));
+  Random random(107);
+  std::vector<Ray> rays;
+  for (int i = 0; i < 20000; ++i) rays.push_back(Ray{Point3(0.0f), Vec3(random.unitVector())});
+  for (int depth : {0, 1, 2, 3}) {
+    TraceContext context = rig.context(depth, 1);
+    double expected = 0.0, term = 0.5;
+    for (int k = 0; k <= depth; ++k) expected += term, term *= 0.5;
+    const MeanEstimate m = misMean(context, MisEstimator::Power, rays, 107 + uint64_t(depth));
+    CAPTURE(depth);
+    INFO(m.describe(expected));
+    CHECK(m.agrees(expected));
+  }
+  // Seen from inside lossless glass, the enclosure (L = 1) is n^2 = 2.25 times as bright.
+  Scene scene = closedEnclosure(0.5f, 0.5f);
+  Material glass{.name = "glass", .type = MaterialType::Glass, .albedo = Color(1.0f), .transmittance = Color(1.0f),
+                 .ior = 1.5f};
+  scene.materials.push_back(glass);
+  scene.spheres.push_back(Sphere{Point3(0.0f), 0.4f, uint32_t(scene.materials.size() - 1)});
+  const Rig inside(std::move(scene));
+  TraceContext context = inside.context(200, 1);
+  std::vector<Ray> fromGlass;
+  for (int i = 0; i < 20000; ++i) fromGlass.push_back(Ray{Point3(0.2f, 0.0f, 0.0f), Vec3(random.unitVector())});
+  const MeanEstimate m = misMean(context, MisEstimator::Power, fromGlass, 111);
+  INFO("inside glass: " << m.describe(2.25));
+  CHECK(m.agrees(2.25));
 }
 
 TEST_CASE("T9.3 path tracer: a light seen in a mirror counts in full, with every estimator" *
