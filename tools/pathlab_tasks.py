@@ -64,6 +64,15 @@ def handed_out(root: Path = ROOT) -> list:
     return parse_task_list(text, every, str(HANDED_OUT_FILE))
 
 
+def not_handed_out(chosen, root: Path = ROOT):
+    """Why `chosen` (task numbers) cannot be checked here: the first that the
+    course does not hand out, said in one line; None when all are handed out."""
+    withheld = [n for n in chosen if n not in handed_out(root)]
+    if not withheld:
+        return None
+    return f"task {withheld[0]} is not handed out in this course ({HANDED_OUT_FILE}): it has no suite here"
+
+
 # Added to the compiler line of a task file graded as a submission (tools/grade,
 # tools/mutate; tests/CMakeLists.txt's validity candidates likewise): libstdc++'s
 # checks turn an empty std::optional dereferenced or an index past a vector's
