@@ -34,7 +34,19 @@ struct WarpSetup {
   std::function<std::optional<Vec3>(Vec2 u)> sample;
   // Its claimed density at many points at once (a student's pdf function).
   std::function<std::vector<double>(const std::vector<Vec3>&)> pdf;
+  // A mixture of two strategies (task 9): which one drew the sample of u
+  // (true: the first), the first's density times its share integrated over
+  // every cell (times n), and the two names. The lab then shows, per cell,
+  // the share of samples the first drew beside the share its density
+  // predicts (the balance heuristic's weight, averaged over the cell).
+  std::function<bool(Vec2 u)> drawnByFirst;
+  std::function<std::vector<double>(double n)> firstExpectedCounts;
+  std::string firstName, secondName;
   int sphereSubdivision = 8;  // midpoints per cell side for the expected counts (32 for piecewise-constant maps)
+  // The pdf integrated over every cell, times n, where the lab's midpoint
+  // rule cannot do it (a small light's pdf, which has no bound at its
+  // outline); unset: the midpoint rule.
+  std::function<std::vector<double>(double n)> expectedCounts;
   std::string mismatchMeans;  // what a rejection usually means, for this warp
   std::string note;           // printed with the numbers (which map, and its size)
 };

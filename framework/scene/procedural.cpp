@@ -76,4 +76,31 @@ Scene scanLikeScene() {
   return scene;
 }
 
+Scene veachPlatesScene(const PlatesSetup& setup) {
+  Scene scene;
+  scene.camera = Camera{Point3(0, 2, 15), Point3(0, -2, 2.5f), Vec3(0, 1, 0), 28.0f};
+  const Point3 corners[4] = {{-4, -1.0588f, 2.7971f}, {-4, -1.8032f, 3.8976f}, {-4, -2.5899f, 4.8987f}, {-4, -3.4226f, 5.7996f}};
+  const Vec3 slopes[4] = {{0, 0.1177f, -1.1942f}, {0, 0.1063f, -1.1953f}, {0, 0.0799f, -1.1973f}, {0, 0.0453f, -1.1991f}};
+  for (int i = 0; i < 4; ++i) {
+    scene.materials.push_back(Material{.name = "plate " + std::to_string(i), .type = MaterialType::RoughConductor,
+                                       .albedo = Color(0.9f), .roughness = setup.roughness[i]});
+    TriangleMesh plate;
+    plate.name = scene.materials.back().name;
+    const Point3 c = corners[i];
+    const Vec3 u(8, 0, 0), v = slopes[i];
+    plate.positions = {c, c + u, c + u + v, c + v};
+    plate.triangles = {{0, 1, 2}, {0, 2, 3}};
+    plate.material = uint32_t(i);
+    scene.meshes.push_back(plate);
+  }
+  const float x[4] = {-3.75f, -1.25f, 1.25f, 3.75f};
+  for (int j = 0; j < 4; ++j) {
+    const float r = setup.radius[j];
+    scene.materials.push_back(Material{.name = "light " + std::to_string(j), .albedo = Color(0.0f),
+                                       .emission = Color(0.8f / (r * r))});  // equal power
+    scene.spheres.push_back(Sphere{Point3(x[j], 0, 0), r, uint32_t(4 + j)});
+  }
+  return scene;
+}
+
 }  // namespace pathlab

@@ -23,4 +23,15 @@ TriangleMesh coil(int turns, int segments, int sides, double wire);
 // One diffuse material; primitives indexed.
 Scene scanLikeScene();
 
+// Veach's plates, the task 9 scene (media/scenes/veach-plates.json without
+// its floor and wall): four rough-metal plates (F0 0.9), each tilted to
+// mirror the camera into a row of four spherical lights of equal power.
+// Plate i (material i, the first four) has roughness[i], top to bottom;
+// light j (sphere j, material 4 + j) radius[j], left to right.
+struct PlatesSetup {
+  float roughness[4] = {0.08f, 0.15f, 0.25f, 0.35f};
+  float radius[4] = {0.033f, 0.1f, 0.3f, 0.9f};
+};
+Scene veachPlatesScene(const PlatesSetup& setup = {});
+
 }  // namespace pathlab

@@ -163,6 +163,54 @@ struct DirectionHistogram {
       }
     return result;
   }
+
+  // As expected(), then again with kFine midpoints per side in the cells
+  // where the pdf varies by more than a factor 2 (or is 0 beside a value
+  // that is not): a lobe a few thousandths of a radian wide (GGX at
+  // roughness 0.08) is integrated finely, and the flat cells cost no more.
+  static std::vector<double> expectedRefined(const PdfBatch& pdfs, double samples, int kSub, int kFine) {
+    const double dPhi = 2.0 * std::numbers::pi / kPhi, dCos = 2.0 / kCos;
+    // A cell's midpoints (sub per side) and the solid angle each stands for.
+    auto cellPoints = [&](int cell, int sub, std::vector<Vec3>& directions, std::vector<double>& solidAngles) {
+      const int i = cell % kPhi, j = cell / kPhi;
+      const double theta0 = std::acos(std::min(1.0, -1.0 + (j + 1) * dCos));
+      const double theta1 = std::acos(std::max(-1.0, -1.0 + j * dCos));
+      const double dTheta = (theta1 - theta0) / sub;
+      for (int sj = 0; sj < sub; ++sj)
+        for (int si = 0; si < sub; ++si) {
+          const double phi = -std::numbers::pi + (i + (si + 0.5) / sub) * dPhi;
+          const double theta = theta0 + (sj + 0.5) * dTheta;
+          const double r = std::sin(theta);
+          directions.emplace_back(float(r * std::cos(phi)), float(r * std::sin(phi)), float(std::cos(theta)));
+          solidAngles.push_back(r * (dPhi / sub) * dTheta);
+        }
+    };
+    auto integrate = [&](const std::vector<int>& cells, int sub, std::vector<double>* varies) {
+      std::vector<Vec3> directions;
+      std::vector<double> solidAngles;
+      for (int cell : cells) cellPoints(cell, sub, directions, solidAngles);
+      const std::vector<double> pdf = pdfs(directions);
+      const size_t perCell = size_t(sub) * size_t(sub);
+      std::vector<double> integrals(cells.size(), 0.0);
+      for (size_t c = 0; c < cells.size(); ++c) {
+        double lo = INFINITY, hi = 0.0;
+        for (size_t s = c * perCell; s < (c + 1) * perCell; ++s) {
+          integrals[c] += samples * pdf[s] * solidAngles[s];
+          lo = std::min(lo, pdf[s]), hi = std::max(hi, pdf[s]);
+        }
+        if (varies && hi > 0.0 && hi > 2.0 * lo) varies->push_back(double(cells[c]));
+      }
+      return integrals;
+    };
+    std::vector<int> all(kPhi * kCos);
+    std::iota(all.begin(), all.end(), 0);
+    std::vector<double> varying;
+    std::vector<double> result = integrate(all, kSub, &varying);
+    std::vector<int> refine(varying.begin(), varying.end());
+    const std::vector<double> fine = integrate(refine, kFine, nullptr);
+    for (size_t c = 0; c < refine.size(); ++c) result[size_t(refine[c])] = fine[c];
+    return result;
+  }
 };
 
 }  // namespace pathlab

@@ -95,7 +95,8 @@ float oneLightPdf(const TraceContext& context, const Point3& from, const Vec3& w
 
 // T9.3 — The path tracer with MIS.
 //
-// Task 5's loop, with both strategies kept at every non-delta vertex:
+// Task 5's loop, with both strategies kept at every non-delta vertex (both
+// samples, every time: not one of the two chosen by a coin):
 //   1. No hit: after the camera ray or a delta bounce, add
 //      throughput * context.background(dir) in full. Otherwise the BSDF
 //      sample found the environment: add
@@ -106,7 +107,8 @@ float oneLightPdf(const TraceContext& context, const Point3& from, const Vec3& w
 //      else weighted the same way, p_light = oneLightPdf(..., hit).
 //   3. If bounce >= context.settings.maxDepth, stop.
 //   4. Light sampling, if the lobe is not a delta (bsdf.isDelta()): point
-//      lights as in task 4, in full (no BSDF sample can find a point); then
+//      lights as in task 4, in full (no BSDF sample can find a point; the
+//      shadow ray stops at the light; a light at distance 0 adds nothing); then
 //      one sampleOneLight sample at hit->point: if it is above the surface
 //      and visible (task 4's shadow ray), add
 //      throughput * f * Le * cos / p_light * weights.light(p_light, bsdf.pdf(wo, wi)).

@@ -23,6 +23,7 @@
 #include "reference_noise.h"
 #include "render_support.h"
 #include "statistics.h"
+#include "scene/procedural.h"
 #include "tasks/camera_rays.h"
 
 using namespace pathlab;
@@ -484,7 +485,8 @@ TEST_CASE("T9.3 path tracer: a white rough mirror under a constant sky reflects 
 
 TEST_CASE("T9.3 path tracer: a point light over a white rough mirror gives f I cos / d^2 exactly" *
           grading(1, "a point light adds f(wo, wi) I cos(theta_i) / d^2 with wi the unit direction to the light "
-                     "(toLight / d, not / d^2) and wo towards the viewer: the lobe is not symmetric in them")) {
+                     "(toLight / d, not / d^2) and wo towards the viewer (the lobe is not symmetric in them); "
+                     "its shadow ray stops at the light")) {
   constexpr float kRoughness = 0.5f;
   Scene scene;
   Material mirror{.name = "white rough mirror", .type = MaterialType::RoughConductor, .albedo = Color(1.0f),
@@ -493,9 +495,13 @@ TEST_CASE("T9.3 path tracer: a point light over a white rough mirror gives f I c
   addQuad(scene, {-50, 0, 50}, {100, 0, 0}, {0, 0, -100}, 0);
   const Point3 lamp(0.6f, 2.0f, -0.3f);
   scene.pointLights.push_back(PointLight{lamp, Color(5.0f)});
+  // A black card just beyond the lamp, across the line from the plate: a
+  // shadow ray that runs past the light (to d^2, say, not d) finds it.
+  const Point3 target(-0.4f, 0.0f, 0.2f);
+  const Point3 beyond = lamp + 0.5f * glm::normalize(lamp - target);
+  addQuad(scene, beyond + Vec3(-0.5f, 0.0f, 0.5f), {1, 0, 0}, {0, 0, -1}, addMaterial(scene, Color(0.0f)));
   const Rig rig(std::move(scene));
   TraceContext context = rig.context(1, 1);
-  const Point3 target(-0.4f, 0.0f, 0.2f);
   const Point3 eye(-2.0f, 1.0f, 1.5f);
   const std::vector<Ray> rays(16, Ray{eye, glm::normalize(target - eye)});
   const DVec3 wo = glm::normalize(DVec3(eye) - DVec3(target)), toLight = DVec3(lamp) - DVec3(target);
@@ -566,17 +572,21 @@ TEST_CASE("T9.3 path tracer: a light seen in a mirror counts in full, with every
 
 TEST_CASE("T9 no NaN or Inf: near-mirror plates, tiny lights and grazing rays" *
           grading(1, "guard the heuristics against overflow, skip light samples with pdf 0, and never divide by a "
-                     "zero cosine; radiance is never negative")) {
+                     "zero cosine or a zero distance (a point light on the surface); radiance is never negative")) {
   Scene scene = threeLights();
   Material plate{.name = "plate", .type = MaterialType::RoughConductor, .albedo = Color(0.9f), .roughness = 0.0f};
   scene.materials.push_back(plate);
   addQuad(scene, {-10, 0, 10}, {20, 0, 0}, {0, 0, -20}, uint32_t(scene.materials.size() - 1));
   const uint32_t tiny = addMaterial(scene, Color(0.0f), Color(1e6f));
   scene.spheres.push_back(Sphere{Point3(-1.0f, 0.5f, 0.5f), 1e-3f, tiny});
+  // A point light lying on a grey card, and rays that hit the card exactly there (distance 0).
+  addQuad(scene, {3, 0.5f, 1}, {1, 0, 0}, {0, 0, -2}, addMaterial(scene, Color(0.5f)));
+  scene.pointLights.push_back(PointLight{Point3(3.5f, 0.5f, 0.0f), Color(1.0f)});
   const Rig rig(std::move(scene));
   TraceContext context = rig.context(4, 1);
   Random random(102);
   std::vector<calls::PathQuery> queries;
+  for (int i = 0; i < 16; ++i) queries.emplace_back(Ray{Point3(3.5f, 1.0f, 0.0f), Vec3(0, -1, 0)}, uint32_t(i), testSeed(102));
   for (int i = 0; i < 20000; ++i) {
     Vec3 d = Vec3(random.unitVector());
     if (i % 3 == 0) d.y = -1e-4f * std::abs(d.y);  // grazing the plate
@@ -601,37 +611,13 @@ TEST_CASE("T9 no NaN or Inf: near-mirror plates, tiny lights and grazing rays" *
 
 namespace {
 
-// Veach's plates at test size (media/scenes/veach-plates.json, without the
-// walls): four rough-metal plates, smoothest at the top, under four
-// spherical lights of equal power and decreasing size.
-struct PlatesSetup {
-  float roughness[4];  // top to bottom
-  float radius[4];     // left to right
-};
-constexpr PlatesSetup kVeach{{0.08f, 0.15f, 0.25f, 0.35f}, {0.033f, 0.1f, 0.3f, 0.9f}};
-
-Scene platesScene(int width, int height, int spp, const PlatesSetup& setup = kVeach) {
-  Scene scene;
-  scene.camera = Camera{Point3(0, 2, 15), Point3(0, -2, 2.5f), Vec3(0, 1, 0), 28.0f};
+// Veach's plates (framework/scene/procedural.h) at test size, direct light only.
+Scene platesScene(int width, int height, int spp, const PlatesSetup& setup = {}) {
+  Scene scene = veachPlatesScene(setup);
   scene.render.width = width;
   scene.render.height = height;
   scene.render.samplesPerPixel = spp;
   scene.render.maxDepth = 1;
-  // Each plate tilted to mirror the camera into the row of lights (veach-plates.json's corners).
-  const Point3 corners[4] = {{-4, -1.0588f, 2.7971f}, {-4, -1.8032f, 3.8976f}, {-4, -2.5899f, 4.8987f}, {-4, -3.4226f, 5.7996f}};
-  const Vec3 slopes[4] = {{0, 0.1177f, -1.1942f}, {0, 0.1063f, -1.1953f}, {0, 0.0799f, -1.1973f}, {0, 0.0453f, -1.1991f}};
-  for (int i = 0; i < 4; ++i) {
-    Material plate{.name = "plate " + std::to_string(i), .type = MaterialType::RoughConductor, .albedo = Color(0.9f),
-                   .roughness = setup.roughness[i]};
-    scene.materials.push_back(plate);
-    addQuad(scene, corners[i], Vec3(8, 0, 0), slopes[i], uint32_t(scene.materials.size() - 1));
-  }
-  const float x[4] = {-3.75f, -1.25f, 1.25f, 3.75f};
-  for (int i = 0; i < 4; ++i) {
-    const float r = setup.radius[i];
-    const uint32_t light = addMaterial(scene, Color(0.0f), Color(0.8f / (r * r)));  // equal power
-    scene.spheres.push_back(Sphere{Point3(x[i], 0, 0), r, light});
-  }
   return scene;
 }
 
@@ -654,7 +640,7 @@ TEST_CASE("T9.3 path tracer: on Veach's plates MIS is as good as the strategy th
   // works has mean 1.034, 1.042, 0.994 and 0.89 in the four cells (the power
   // heuristic keeps a little of the failing strategy), at most 1.112, with
   // standard deviations up to 0.029; 1.2 is 5.4 of them above the worst mean.
-  constexpr PlatesSetup kMild{{0.1f, 0.2f, 0.3f, 0.4f}, {0.1f, 0.2f, 0.4f, 0.8f}};
+  const PlatesSetup kMild{{0.1f, 0.2f, 0.3f, 0.4f}, {0.1f, 0.2f, 0.4f, 0.8f}};
   constexpr int kWidth = 96, kHeight = 72, kSamples = 128;
   const Scene scene = platesScene(kWidth, kHeight, kSamples, kMild);
   const Rig rig(scene);
@@ -715,7 +701,7 @@ TEST_CASE("T9.3 path tracer: on Veach's plates MIS is as good as the strategy th
     CAPTURE(c);
     INFO("plate " << cells[c].plate << " under light " << cells[c].light << " (" << bsdf[c].count()
                   << " pixels): variance per sample, light sampling " << light[c].mean() << ", BSDF sampling "
-                  << bsdf[c].mean() << ", MIS " << mis[c].mean() << "; " << misEstimatorName(cells[c].works)
+                  << bsdf[c].mean() << ", MIS " << mis[c].mean() << "; " << std::string(misEstimatorName(cells[c].works))
                   << " is the strategy that works here");
     CHECK(bsdf[c].count() >= 4);
     INFO("mean radiance: MIS " << misMean << ", the strategy that works " << worksMean);

@@ -239,6 +239,30 @@ MUTANTS = [
     (9, "balance-for-power", "the balance heuristic where the power heuristic is asked for",
      [("  if (pdfOther <= pdfThis) {\n    const float r = pdfOther / pdfThis;\n    return 1.0f / (1.0f + r * r);\n  }\n  const float r = pdfThis / pdfOther;\n  return r * r / (1.0f + r * r);",
        "  return pdfThis / (pdfThis + pdfOther);")]),
+    (9, "one-sample-mis", "Veach's one-sample model, which the handout rules out (tracePathMis keeps both "
+     "samples): at each vertex light sampling or the BSDF's emission, each half the time, weighted and divided by "
+     "that probability. Unbiased, but where one strategy works its variance is 2 sigma^2 + mu^2, not sigma^2",
+     [("  float previousPdf = 0.0f;\n",
+       "  float previousPdf = 0.0f;\n"
+       "  float previousBsdfShare = 0.0f;  // the probability that the last vertex kept the BSDF's emission (0: it did not)\n"),
+      ("      } else if (weights.bsdf && context.lights.environment) {",
+       "      } else if (weights.bsdf && previousBsdfShare > 0.0f && context.lights.environment) {"),
+      ("                    weights.bsdf(previousPdf, pdfLight);\n      }\n      break;",
+       "                    weights.bsdf(previousPdf, pdfLight) / previousBsdfShare;\n      }\n      break;"),
+      ("    } else if (weights.bsdf && maxComponent(emitted) > 0.0f) {",
+       "    } else if (weights.bsdf && previousBsdfShare > 0.0f && maxComponent(emitted) > 0.0f) {"),
+      ("      radiance += throughput * emitted * weights.bsdf(previousPdf, pdfLight);",
+       "      radiance += throughput * emitted * weights.bsdf(previousPdf, pdfLight) / previousBsdfShare;"),
+      ("    const Bsdf bsdf = context.bsdf(*hit, wo);\n",
+       "    const Bsdf bsdf = context.bsdf(*hit, wo);\n"
+       "    // One strategy per vertex: light sampling with probability lightShare, else the BSDF's emission.\n"
+       "    const float lightShare = !weights.bsdf ? 1.0f : !weights.light ? 0.0f : 0.5f;\n"
+       "    const bool takeLight = sampler.next1D() < lightShare;\n"),
+      ("      if (light && light->pdf > 0.0f) {", "      if (takeLight && light && light->pdf > 0.0f) {"),
+      ("                      weights.light(light->pdf, bsdf.pdf(wo, light->wi));",
+       "                      weights.light(light->pdf, bsdf.pdf(wo, light->wi)) / lightShare;"),
+      ("    previousPdf = sample->pdf;\n",
+       "    previousPdf = sample->pdf;\n    previousBsdfShare = takeLight ? 0.0f : 1.0f - lightShare;\n")]),
 ]
 ALTERNATES = [
     (1, "mirrored-jitter", "pixel + (1 - u): another uniform map onto the pixel",
@@ -342,6 +366,34 @@ ALTERNATES = [
        "  const float choice = choiceOf(lights, chosen);"),
       ("  const float choice = 1.0f / float(count);\n  if (hit) {\n    const AreaLight* light = lights.areaLightAt(context.scene, *hit);\n    return light ? choice * Lights::areaPdfSolidAngle(*light, from, *hit) : 0.0f;\n  }\n  return lights.environment ? choice * lights.environment->pdf(wi) : 0.0f;",
        "  if (hit) {\n    const AreaLight* light = lights.areaLightAt(context.scene, *hit);\n    return light ? choiceOf(lights, 0) * Lights::areaPdfSolidAngle(*light, from, *hit) : 0.0f;\n  }\n"
+       "  return lights.environment ? choiceOf(lights, int(lights.areas.size())) * lights.environment->pdf(wi) : 0.0f;")]),
+    (9, "lights-chosen-by-power", "area lights chosen in proportion to their power (area times Le), the sky "
+     "with its even share",
+     [("int lightCount(const Lights& lights) { return int(lights.areas.size()) + (lights.environment ? 1 : 0); }",
+       "int lightCount(const Lights& lights) { return int(lights.areas.size()) + (lights.environment ? 1 : 0); }\n\n"
+       "// The probability of choosing light k (the sky is k = areas): the sky 1 / count, each area light its\n"
+       "// share of the rest by power.\n"
+       "float choiceOf(const Lights& lights, int k) {\n"
+       "  const int areas = int(lights.areas.size());\n"
+       "  const float sky = lights.environment ? 1.0f / float(lightCount(lights)) : 0.0f;\n"
+       "  if (k == areas) return sky;\n"
+       "  double total = 0.0;\n"
+       "  for (const AreaLight& light : lights.areas) total += double(light.area()) * luminance(light.radiance());\n"
+       "  const AreaLight& light = lights.areas[size_t(k)];\n"
+       "  return float((1.0 - double(sky)) * double(light.area()) * luminance(light.radiance()) / total);\n}\n\n"
+       "// The light that u in [0, 1) picks with those probabilities.\n"
+       "int chooseLight(const Lights& lights, float u) {\n"
+       "  const int count = lightCount(lights);\n"
+       "  for (int k = 0; k < count - 1; ++k) {\n"
+       "    u -= choiceOf(lights, k);\n"
+       "    if (u < 0.0f) return k;\n"
+       "  }\n"
+       "  return count - 1;\n}"),
+      ("  const int chosen = std::min(int(u.x * float(count)), count - 1);\n  const float choice = 1.0f / float(count);",
+       "  const int chosen = chooseLight(lights, u.x);\n  const float choice = choiceOf(lights, chosen);"),
+      ("  const float choice = 1.0f / float(count);\n  if (hit) {\n    const AreaLight* light = lights.areaLightAt(context.scene, *hit);\n    return light ? choice * Lights::areaPdfSolidAngle(*light, from, *hit) : 0.0f;\n  }\n  return lights.environment ? choice * lights.environment->pdf(wi) : 0.0f;",
+       "  if (hit) {\n    const AreaLight* light = lights.areaLightAt(context.scene, *hit);\n"
+       "    return light ? choiceOf(lights, int(light - lights.areas.data())) * Lights::areaPdfSolidAngle(*light, from, *hit) : 0.0f;\n  }\n"
        "  return lights.environment ? choiceOf(lights, int(lights.areas.size())) * lights.environment->pdf(wi) : 0.0f;")]),
     (9, "random-numbers-reordered", "the light sample's numbers drawn in the other order, the choice from the last one",
      [("      const Vec2 u2 = sampler.next2D();\n      const std::optional<LightSample> light = sampleOneLight(context, hit->point, Vec3(sampler.next1D(), u2));",
