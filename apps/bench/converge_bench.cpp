@@ -275,7 +275,11 @@ int runConvergeBench(const ConvergeOptions& options) {
 
   // The converged reference image: the linked code's default (best)
   // strategy, another seed, cached.
-  const fs::path referencePath = fs::path(options.outDir) / referenceFileName(stem, options.referenceSpp, linked);
+  const Strategy referenceStrategy = strategy(options.referenceStrategy);
+  const std::string referenceStem =
+      referenceStrategy.name == "reference" ? stem : stem + "-" + referenceStrategy.name;
+  const fs::path referencePath =
+      fs::path(options.outDir) / referenceFileName(referenceStem, options.referenceSpp, linked);
   Image reference;
   bool cached = false;
   double referenceSeconds = 0.0;
@@ -289,12 +293,12 @@ int runConvergeBench(const ConvergeOptions& options) {
     high.render.samplesPerPixel = options.referenceSpp;
     high.render.seed = 987654321;
     std::fprintf(stderr,
-                 "rendering the reference image once: %dx%d, %d spp, default strategy (%s); it is cached in %s for "
+                 "rendering the reference image once: %dx%d, %d spp, strategy %s (%s); it is cached in %s for "
                  "later runs with the same --out\n",
-                 high.render.width, high.render.height, options.referenceSpp,
+                 high.render.width, high.render.height, options.referenceSpp, referenceStrategy.name.c_str(),
                  describeTasks(linked, {1, 2, 3, 4, 5, 6, 7}).c_str(),
                  referencePath.string().c_str());
-    RenderOptions render;
+    RenderOptions render = referenceStrategy.options;
     render.threads = threads;
     render.progress = true;  // the bar shows itself only when stderr is a terminal
     RenderResult result = pathlab::render(high, render);
@@ -457,6 +461,7 @@ int runConvergeBench(const ConvergeOptions& options) {
     json["tasks_recorded"] = linked.recorded;
     json["reference_image"] = {{"path", referencePath.string()},
                                {"spp", options.referenceSpp},
+                               {"strategy", referenceStrategy.name},
                                {"cached", cached},
                                {"seconds", cached ? Json(nullptr) : Json(referenceSeconds)}};
     json["probe"] = {{"width", probe.render.width}, {"height", probe.render.height}, {"spp", kProbeSpp}};

@@ -79,6 +79,8 @@ int main(int argc, char** argv) {
   convergeCommand->add_option("--out", converge.outDir, "Output folder for the CSV and the cached reference");
   convergeCommand->add_option("--reference-spp", converge.referenceSpp, "Samples per pixel of the reference")
       ->check(wholeNumber(1));
+  convergeCommand->add_option("--reference-strategy", converge.referenceStrategy,
+                              "The strategy that renders the reference (default: reference, the course's recipe)");
   convergeCommand->add_option("--threads", converge.threads, "Threads (default: all cores)")->check(wholeNumber(0));
   convergeCommand->add_flag("--json", converge.json, "Print one JSON object as the last line");
   try {

@@ -56,7 +56,8 @@ class Sheet {
     const int x0 = (index % columns_) * width_, y0 = (index / columns_) * (height_ + 20);
     for (int y = 0; y < std::min(height_, tile.height); ++y)
       for (int x = 0; x < std::min(width_, tile.width); ++x) image_.at(x0 + x, y0 + 20 + y) = tile.at(x, y);
-    drawText(image_, Point2(float(x0 + 4), float(y0 + 4)), label, Color(0.9f), 2);
+    const int scale = 8 + 12 * int(label.size()) <= width_ ? 2 : 1;  // 6 pixels a letter at scale 1: fit the tile
+    drawText(image_, Point2(float(x0 + 4), float(y0 + 4)), label, Color(0.9f), scale);
   }
   Image& image() { return image_; }
 
@@ -154,7 +155,7 @@ DebugOutput weightsView(const DebugViewRequest& request) {
   sheet.place(light, 0, "LIGHT SAMPLE x W");
   sheet.place(bsdf, 1, "BSDF SAMPLE x W");
   sheet.place(sum, 2, "BOTH: DIRECT LIGHT");
-  sheet.place(share, 3, "SHARE: LIGHT RED, BSDF GREEN");
+  sheet.place(share, 3, "RED: LIGHT, GREEN: BSDF");
   char report[160];
   const double total = std::max(1e-30, totalLight + totalBsdf);
   std::snprintf(report, sizeof report, "direct light at the first hit: %.1f %% from light samples, %.1f %% from BSDF samples\n",

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <vector>
 
 #include "calls.h"
@@ -228,13 +229,34 @@ TEST_CASE("T9.2 one light: Le cos / pdf averages to the exact irradiance from ev
 
 TEST_CASE("T9.2 one light: each sample's direction, distance and radiance are those of the light it found" *
           grading(1, "wi points from the shading point to the light point, distance is to that point (kInfinity "
-                     "for the sky), radiance is the light's Le there (or the sky's along wi)")) {
+                     "for the sky), radiance is the light's Le there (or the sky's along wi), and pdf is what "
+                     "oneLightPdf says for wi: the same choice probability in both")) {
   Scene scene = threeLights();
   Rig rig(scene);
   TraceContext context = rig.context();
   const Point3 from(0.2f, 0.1f, 0.3f);
   int wrong = 0, found = 0;
-  for (const std::optional<LightSample>& s : candidate::sampleOneLight(scene, from, uniforms(2000, 96))) {
+  const std::vector<std::optional<LightSample>> samples = candidate::sampleOneLight(scene, from, uniforms(2000, 96));
+  // oneLightPdf for every sample's direction (the lights do not hide one another from `from`).
+  std::vector<calls::PdfQuery> directions;
+  for (const std::optional<LightSample>& s : samples)
+    if (s) directions.push_back({from, s->wi});
+  const std::vector<float> pdfs = candidate::oneLightPdf(scene, directions);
+  int pdfsDiffer = 0;
+  std::ostringstream examples;
+  size_t next = 0;
+  for (const std::optional<LightSample>& s : samples) {
+    if (!s) continue;
+    // Relative 1e-3, and 1 % of the samples may differ: the ball's pdf, 1 / cos
+    // at its outline, is asked at the float hit point.
+    if (!(std::abs(pdfs[next] - s->pdf) <= 1e-3f * s->pdf) && ++pdfsDiffer <= 3) {
+      examples << "\n  towards " << str(s->wi) << ": pdf " << s->pdf << ", oneLightPdf " << pdfs[next];
+    }
+    ++next;
+  }
+  INFO(pdfsDiffer << " of " << directions.size() << " samples have a pdf oneLightPdf does not give" << examples.str());
+  CHECK(pdfsDiffer <= int(directions.size()) / 100);
+  for (const std::optional<LightSample>& s : samples) {
     if (!s) continue;
     ++found;
     const std::optional<Hit> hit = context.intersect(Ray{from, s->wi}, Interval{0.0f, kInfinity});
@@ -252,7 +274,8 @@ TEST_CASE("T9.2 one light: each sample's direction, distance and radiance are th
 
 TEST_CASE("T9.2 one light: its density is 0 towards a light's back, a surface that does not emit, and an empty sky" *
           grading(1, "light sampling never goes where a light shows its back (one-sided emitters) or where nothing "
-                     "emits: oneLightPdf must be 0 there, or MIS weighs those BSDF samples wrongly")) {
+                     "emits (no light at all, a black sky): oneLightPdf must be 0 there, or MIS weighs those BSDF "
+                     "samples wrongly")) {
   Scene scene;
   const uint32_t lamp = addMaterial(scene, Color(0.0f), Color(5.0f));
   const uint32_t wall = addMaterial(scene, Color(0.7f));
@@ -272,6 +295,21 @@ TEST_CASE("T9.2 one light: its density is 0 towards a light's back, a surface th
   // And positive where the lamp faces the point.
   const std::vector<float> front = candidate::oneLightPdf(scene, {{Point3(0.0f, 2.0f, 0.0f), Vec3(0, -1, 0)}});
   CHECK(front[0] > 0.0f);
+  // A scene with no light at all.
+  Scene dark;
+  addQuad(dark, {3.0f, -1.0f, -1.0f}, {0, 2, 0}, {0, 0, 2}, addMaterial(dark, Color(0.7f)));
+  CHECK(candidate::oneLightPdf(dark, {{Point3(0.0f), Vec3(1, 0, 0)}, {Point3(0.0f), Vec3(-1, 0, 0)}}) ==
+        std::vector<float>{0.0f, 0.0f});
+  // A black sky map is a light of no power: its sampler draws nothing, and
+  // neither does sampleOneLight (or only samples that carry no light).
+  Scene black;
+  black.environment = Environment{};
+  black.environment->image = Image(16, 8, Color(0.0f));
+  int carrying = 0;
+  for (const std::optional<LightSample>& sample : candidate::sampleOneLight(black, Point3(0.0f), uniforms(200, 97))) {
+    if (sample && sample->pdf > 0.0f && maxComponent(sample->radiance) > 0.0f) ++carrying;
+  }
+  CHECK(carrying == 0);
 }
 
 // ---------------------------------------------------------------- T9.3
@@ -485,8 +523,7 @@ TEST_CASE("T9.3 path tracer: a white rough mirror under a constant sky reflects 
 
 TEST_CASE("T9.3 path tracer: a point light over a white rough mirror gives f I cos / d^2 exactly" *
           grading(1, "a point light adds f(wo, wi) I cos(theta_i) / d^2 with wi the unit direction to the light "
-                     "(toLight / d, not / d^2) and wo towards the viewer (the lobe is not symmetric in them); "
-                     "its shadow ray stops at the light")) {
+                     "(toLight / d, not / d^2), unless its shadow ray, which stops at the light, is blocked")) {
   constexpr float kRoughness = 0.5f;
   Scene scene;
   Material mirror{.name = "white rough mirror", .type = MaterialType::RoughConductor, .albedo = Color(1.0f),
@@ -495,6 +532,9 @@ TEST_CASE("T9.3 path tracer: a point light over a white rough mirror gives f I c
   addQuad(scene, {-50, 0, 50}, {100, 0, 0}, {0, 0, -100}, 0);
   const Point3 lamp(0.6f, 2.0f, -0.3f);
   scene.pointLights.push_back(PointLight{lamp, Color(5.0f)});
+  // A second lamp above the target, hidden from it by a black card: it adds nothing.
+  scene.pointLights.push_back(PointLight{Point3(-0.4f, 3.0f, 0.2f), Color(5.0f)});
+  addQuad(scene, {-0.6f, 1.5f, 0.4f}, {0.4f, 0, 0}, {0, 0, -0.4f}, addMaterial(scene, Color(0.0f)));
   // A black card just beyond the lamp, across the line from the plate: a
   // shadow ray that runs past the light (to d^2, say, not d) finds it.
   const Point3 target(-0.4f, 0.0f, 0.2f);
@@ -547,6 +587,39 @@ TEST_CASE("T9.3 path tracer: -m counts bounces, and Russian roulette keeps light
   const MeanEstimate m = misMean(context, MisEstimator::Power, fromGlass, 111);
   INFO("inside glass: " << m.describe(2.25));
   CHECK(m.agrees(2.25));
+}
+
+TEST_CASE("T9.3 path tracer: a light hidden by cards near it lights nothing, with every estimator" *
+          grading(1, "a light sample's shadow ray runs from the surface to the point on the light (its length is "
+                     "the distance, not 1 and not a fraction of it), and a point light's shadow ray too")) {
+  // A floor under a square lamp and a point light, each hidden by a black
+  // card just below it (at 99.5 % and 90 % of the way up): nothing reaches
+  // the floor.
+  Scene scene;
+  const uint32_t black = addMaterial(scene, Color(0.0f));
+  addQuad(scene, {-5, 0, 5}, {10, 0, 0}, {0, 0, -10}, addMaterial(scene, Color(0.8f)));
+  addQuad(scene, {-0.5f, 3.0f, -0.5f}, {1, 0, 0}, {0, 0, 1}, addMaterial(scene, Color(0.0f), Color(10.0f)));  // faces down
+  addQuad(scene, {-0.8f, 2.985f, 0.8f}, {1.6f, 0, 0}, {0, 0, -1.6f}, black);
+  scene.pointLights.push_back(PointLight{Point3(2.0f, 3.0f, 0.0f), Color(10.0f)});
+  addQuad(scene, {1.6f, 2.7f, 0.4f}, {0.8f, 0, 0}, {0, 0, -0.8f}, black);
+  const Rig rig(std::move(scene));
+  TraceContext context = rig.context(1, 1);
+  Random random(107);
+  std::vector<calls::PathQuery> queries;
+  for (int i = 0; i < 4000; ++i) {
+    const Point3 target(float(random.uniform(-1.5, 3.0)), 0.0f, float(random.uniform(-1.0, 1.0)));
+    const Point3 eye(0.0f, 1.0f, 4.0f);
+    queries.emplace_back(Ray{eye, glm::normalize(target - eye)}, uint32_t(i), testSeed(107));
+  }
+  for (MisEstimator e : kAllEstimators) {
+    int lit = 0;
+    for (const Color& L : candidate::tracePathsMis(context, e, queries)) {
+      if (!(maxComponent(L) == 0.0f)) ++lit;
+    }
+    CAPTURE(nameOf(e));
+    INFO(lit << " of " << queries.size() << " points of the floor are lit through the cards");
+    CHECK(lit == 0);
+  }
 }
 
 TEST_CASE("T9.3 path tracer: a light seen in a mirror counts in full, with every estimator" *
