@@ -235,7 +235,7 @@ TEST_CASE("T9.2 one light: each sample's direction, distance and radiance are th
   Rig rig(scene);
   TraceContext context = rig.context();
   const Point3 from(0.2f, 0.1f, 0.3f);
-  int wrong = 0, found = 0;
+  int wrong = 0, missed = 0, found = 0;
   const std::vector<std::optional<LightSample>> samples = candidate::sampleOneLight(scene, from, uniforms(2000, 96));
   // oneLightPdf for every sample's direction (the lights do not hide one another from `from`).
   std::vector<calls::PdfQuery> directions;
@@ -260,16 +260,24 @@ TEST_CASE("T9.2 one light: each sample's direction, distance and radiance are th
     if (!s) continue;
     ++found;
     const std::optional<Hit> hit = context.intersect(Ray{from, s->wi}, Interval{0.0f, kInfinity});
-    const bool ok = hit && std::abs(hit->t - s->distance) <= 1e-3f * std::max(1.0f, s->distance) &&
+    if (!hit) {
+      ++missed;
+      continue;
+    }
+    const bool ok = std::abs(hit->t - s->distance) <= 1e-3f * std::max(1.0f, s->distance) &&
                     std::abs(emittedRadiance(rig.scene(), *hit, -s->wi).y - s->radiance.y) <= 1e-4f * s->radiance.y &&
                     s->pdf > 0.0f;
     if (!ok && ++wrong <= 5) {
       MESSAGE("sample towards " << str(s->wi) << " at distance " << s->distance << " with radiance " << s->radiance.y
-                                << ": the ray finds " << (hit ? "a surface at " + std::to_string(hit->t) : "nothing"));
+                                << ": the ray finds a surface at " << hit->t);
     }
   }
   CHECK(found > 1000);
   CHECK(wrong == 0);
+  // 1 % may find nothing: a ray aimed at the ball's outline can graze past
+  // it in float (seed 24 of 1-100 has one such sample).
+  INFO(missed << " of " << found << " samples' rays find nothing");
+  CHECK(missed <= found / 100);
 }
 
 TEST_CASE("T9.2 one light: its density is 0 towards a light's back, a surface that does not emit, and an empty sky" *
