@@ -289,6 +289,11 @@ int runConvergeBench(const ConvergeOptions& options) {
     cached = true;
     std::printf("reference image: %s (cached)\n", referencePath.string().c_str());
   } else {
+    std::vector<int> tasks = {1, 2, 3, 4, 5, 6, 7};
+    tasks.insert(tasks.end(), referenceStrategy.tasks.begin(), referenceStrategy.tasks.end());
+    std::sort(tasks.begin(), tasks.end());
+    tasks.erase(std::unique(tasks.begin(), tasks.end()), tasks.end());
+    const std::string referenceTasks = describeTasks(linked, tasks);
     Scene high = scene;
     high.render.samplesPerPixel = options.referenceSpp;
     high.render.seed = 987654321;
@@ -296,7 +301,7 @@ int runConvergeBench(const ConvergeOptions& options) {
                  "rendering the reference image once: %dx%d, %d spp, strategy %s (%s); it is cached in %s for "
                  "later runs with the same --out\n",
                  high.render.width, high.render.height, options.referenceSpp, referenceStrategy.name.c_str(),
-                 describeTasks(linked, {1, 2, 3, 4, 5, 6, 7}).c_str(),
+                 referenceTasks.c_str(),
                  referencePath.string().c_str());
     RenderOptions render = referenceStrategy.options;
     render.threads = threads;
