@@ -602,16 +602,19 @@ TEST_CASE("T9.3 path tracer: a light hidden by cards near it lights nothing, wit
                      "the distance, not 1 and not a fraction of it), and a point light's shadow ray too")) {
   // A floor under a square lamp and a point light, each hidden by a black
   // card just below it (at 99.5 % and 90 % of the way up): nothing reaches
-  // the floor.
-  Scene scene;
-  const uint32_t black = addMaterial(scene, Color(0.0f));
-  addQuad(scene, {-5, 0, 5}, {10, 0, 0}, {0, 0, -10}, addMaterial(scene, Color(0.8f)));
-  addQuad(scene, {-0.5f, 3.0f, -0.5f}, {1, 0, 0}, {0, 0, 1}, addMaterial(scene, Color(0.0f), Color(10.0f)));  // faces down
-  addQuad(scene, {-0.8f, 2.985f, 0.8f}, {1.6f, 0, 0}, {0, 0, -1.6f}, black);
-  scene.pointLights.push_back(PointLight{Point3(2.0f, 3.0f, 0.0f), Color(10.0f)});
-  addQuad(scene, {1.6f, 2.7f, 0.4f}, {0.8f, 0, 0}, {0, 0, -0.8f}, black);
-  const Rig rig(std::move(scene));
-  TraceContext context = rig.context(1, 1);
+  // the floor. Without the cards the same floor is lit.
+  auto floorUnderLamps = [](bool cards) {
+    Scene scene;
+    const uint32_t black = addMaterial(scene, Color(0.0f));
+    addQuad(scene, {-5, 0, 5}, {10, 0, 0}, {0, 0, -10}, addMaterial(scene, Color(0.8f)));
+    addQuad(scene, {-0.5f, 3.0f, -0.5f}, {1, 0, 0}, {0, 0, 1}, addMaterial(scene, Color(0.0f), Color(10.0f)));  // faces down
+    scene.pointLights.push_back(PointLight{Point3(2.0f, 3.0f, 0.0f), Color(10.0f)});
+    if (cards) {
+      addQuad(scene, {-0.8f, 2.985f, 0.8f}, {1.6f, 0, 0}, {0, 0, -1.6f}, black);
+      addQuad(scene, {1.6f, 2.7f, 0.4f}, {0.8f, 0, 0}, {0, 0, -0.8f}, black);
+    }
+    return scene;
+  };
   Random random(107);
   std::vector<calls::PathQuery> queries;
   for (int i = 0; i < 4000; ++i) {
@@ -619,14 +622,23 @@ TEST_CASE("T9.3 path tracer: a light hidden by cards near it lights nothing, wit
     const Point3 eye(0.0f, 1.0f, 4.0f);
     queries.emplace_back(Ray{eye, glm::normalize(target - eye)}, uint32_t(i), testSeed(107));
   }
-  for (MisEstimator e : kAllEstimators) {
-    int lit = 0;
-    for (const Color& L : candidate::tracePathsMis(context, e, queries)) {
-      if (!(maxComponent(L) == 0.0f)) ++lit;
+  for (bool cards : {false, true}) {
+    const Rig rig(floorUnderLamps(cards));
+    TraceContext context = rig.context(1, 1);
+    for (MisEstimator e : kAllEstimators) {
+      int lit = 0;
+      for (const Color& L : candidate::tracePathsMis(context, e, queries)) {
+        if (!(maxComponent(L) == 0.0f)) ++lit;
+      }
+      CAPTURE(nameOf(e));
+      CAPTURE(cards);
+      INFO(lit << " of " << queries.size() << " points of the floor are lit");
+      if (cards) {
+        CHECK(lit == 0);
+      } else {
+        CHECK(lit >= 20);  // BSDF sampling alone finds the lamp for about 90 of them (under 20: p < 1e-20)
+      }
     }
-    CAPTURE(nameOf(e));
-    INFO(lit << " of " << queries.size() << " points of the floor are lit through the cards");
-    CHECK(lit == 0);
   }
 }
 
