@@ -129,86 +129,68 @@ struct DirectionHistogram {
   // the student's pdf for all of them in one message).
   using PdfBatch = std::function<std::vector<double>(const std::vector<Vec3>&)>;
 
-  // kSub = 32 for piecewise-constant pdfs (environment maps), as Mitsuba does.
-  static std::vector<double> expected(const PdfBatch& pdfs, double samples, int kSub = 8) {
+  // The sub-grid midpoints of cell (column i, row j), sub per side, each with
+  // its sin(theta); returns the midpoints' spacing in theta. The cell's z range
+  // [z0, z1] is the theta range [acos(z1), acos(z0)].
+  static double cellMidpoints(int i, int j, int sub, std::vector<Vec3>& directions, std::vector<double>& sines) {
     const double dPhi = 2.0 * std::numbers::pi / kPhi, dCos = 2.0 / kCos;
-    // Every midpoint of every cell's sub-grid, cell by cell, and its sin(theta).
+    const double theta0 = std::acos(std::min(1.0, -1.0 + (j + 1) * dCos));
+    const double theta1 = std::acos(std::max(-1.0, -1.0 + j * dCos));
+    const double dTheta = (theta1 - theta0) / sub;
+    for (int sj = 0; sj < sub; ++sj)
+      for (int si = 0; si < sub; ++si) {
+        const double phi = -std::numbers::pi + (i + (si + 0.5) / sub) * dPhi;
+        const double theta = theta0 + (sj + 0.5) * dTheta;
+        const double r = std::sin(theta);
+        directions.emplace_back(float(r * std::cos(phi)), float(r * std::sin(phi)), float(std::cos(theta)));
+        sines.push_back(r);
+      }
+    return dTheta;
+  }
+
+  // The midpoint rule over the given cells (index j * kPhi + i), sub per side:
+  // samples times the pdf's integral over each; `varies` (if given) collects
+  // the cells where the pdf varies by more than a factor 2 (or is 0 beside a
+  // value that is not).
+  static std::vector<double> integrateCells(const PdfBatch& pdfs, double samples, const std::vector<int>& cells, int sub,
+                                            std::vector<int>* varies = nullptr) {
+    const double dPhi = 2.0 * std::numbers::pi / kPhi;
     std::vector<Vec3> directions;
     std::vector<double> sines, dThetas;
-    directions.reserve(size_t(kPhi) * kCos * kSub * kSub);
-    for (int j = 0; j < kCos; ++j) {
-      // The cell's z range [z0, z1] is the theta range [acos(z1), acos(z0)].
-      const double theta0 = std::acos(std::min(1.0, -1.0 + (j + 1) * dCos));
-      const double theta1 = std::acos(std::max(-1.0, -1.0 + j * dCos));
-      const double dTheta = (theta1 - theta0) / kSub;
-      dThetas.push_back(dTheta);
-      for (int i = 0; i < kPhi; ++i)
-        for (int sj = 0; sj < kSub; ++sj)
-          for (int si = 0; si < kSub; ++si) {
-            const double phi = -std::numbers::pi + (i + (si + 0.5) / kSub) * dPhi;
-            const double theta = theta0 + (sj + 0.5) * dTheta;
-            const double r = std::sin(theta);
-            directions.emplace_back(float(r * std::cos(phi)), float(r * std::sin(phi)), float(std::cos(theta)));
-            sines.push_back(r);
-          }
-    }
+    directions.reserve(cells.size() * size_t(sub) * size_t(sub));
+    for (int cell : cells) dThetas.push_back(cellMidpoints(cell % kPhi, cell / kPhi, sub, directions, sines));
     const std::vector<double> pdf = pdfs(directions);
-    std::vector<double> result(kPhi * kCos, 0.0);
+    std::vector<double> result(cells.size(), 0.0);
     size_t k = 0;
-    for (int j = 0; j < kCos; ++j)
-      for (int i = 0; i < kPhi; ++i) {
-        double integral = 0.0;
-        for (int s = 0; s < kSub * kSub; ++s, ++k) integral += pdf[k] * sines[k];
-        result[size_t(j * kPhi + i)] = samples * integral * (dPhi / kSub) * dThetas[size_t(j)];
+    for (size_t c = 0; c < cells.size(); ++c) {
+      double integral = 0.0, lo = INFINITY, hi = 0.0;
+      for (int s = 0; s < sub * sub; ++s, ++k) {
+        integral += pdf[k] * sines[k];
+        lo = std::min(lo, pdf[k]), hi = std::max(hi, pdf[k]);
       }
+      result[c] = samples * integral * (dPhi / sub) * dThetas[c];
+      if (varies && hi > 0.0 && hi > 2.0 * lo) varies->push_back(cells[c]);
+    }
     return result;
   }
 
-  // As expected(), then again with kFine midpoints per side in the cells
-  // where the pdf varies by more than a factor 2 (or is 0 beside a value
-  // that is not): a lobe a few thousandths of a radian wide (GGX at
-  // roughness 0.08) is integrated finely, and the flat cells cost no more.
-  static std::vector<double> expectedRefined(const PdfBatch& pdfs, double samples, int kSub, int kFine) {
-    const double dPhi = 2.0 * std::numbers::pi / kPhi, dCos = 2.0 / kCos;
-    // A cell's midpoints (sub per side) and the solid angle each stands for.
-    auto cellPoints = [&](int cell, int sub, std::vector<Vec3>& directions, std::vector<double>& solidAngles) {
-      const int i = cell % kPhi, j = cell / kPhi;
-      const double theta0 = std::acos(std::min(1.0, -1.0 + (j + 1) * dCos));
-      const double theta1 = std::acos(std::max(-1.0, -1.0 + j * dCos));
-      const double dTheta = (theta1 - theta0) / sub;
-      for (int sj = 0; sj < sub; ++sj)
-        for (int si = 0; si < sub; ++si) {
-          const double phi = -std::numbers::pi + (i + (si + 0.5) / sub) * dPhi;
-          const double theta = theta0 + (sj + 0.5) * dTheta;
-          const double r = std::sin(theta);
-          directions.emplace_back(float(r * std::cos(phi)), float(r * std::sin(phi)), float(std::cos(theta)));
-          solidAngles.push_back(r * (dPhi / sub) * dTheta);
-        }
-    };
-    auto integrate = [&](const std::vector<int>& cells, int sub, std::vector<double>* varies) {
-      std::vector<Vec3> directions;
-      std::vector<double> solidAngles;
-      for (int cell : cells) cellPoints(cell, sub, directions, solidAngles);
-      const std::vector<double> pdf = pdfs(directions);
-      const size_t perCell = size_t(sub) * size_t(sub);
-      std::vector<double> integrals(cells.size(), 0.0);
-      for (size_t c = 0; c < cells.size(); ++c) {
-        double lo = INFINITY, hi = 0.0;
-        for (size_t s = c * perCell; s < (c + 1) * perCell; ++s) {
-          integrals[c] += samples * pdf[s] * solidAngles[s];
-          lo = std::min(lo, pdf[s]), hi = std::max(hi, pdf[s]);
-        }
-        if (varies && hi > 0.0 && hi > 2.0 * lo) varies->push_back(double(cells[c]));
-      }
-      return integrals;
-    };
+  // kSub = 32 for piecewise-constant pdfs (environment maps), as Mitsuba does.
+  static std::vector<double> expected(const PdfBatch& pdfs, double samples, int kSub = 8) {
     std::vector<int> all(kPhi * kCos);
     std::iota(all.begin(), all.end(), 0);
-    std::vector<double> varying;
-    std::vector<double> result = integrate(all, kSub, &varying);
-    std::vector<int> refine(varying.begin(), varying.end());
-    const std::vector<double> fine = integrate(refine, kFine, nullptr);
-    for (size_t c = 0; c < refine.size(); ++c) result[size_t(refine[c])] = fine[c];
+    return integrateCells(pdfs, samples, all, kSub);
+  }
+
+  // As expected(), then again with kFine midpoints per side in the cells
+  // where the pdf varies by more than a factor 2: a lobe a few thousandths
+  // of a radian wide (GGX at roughness 0.08) is integrated finely, and the
+  // flat cells cost no more.
+  static std::vector<double> expectedRefined(const PdfBatch& pdfs, double samples, int kSub, int kFine) {
+    std::vector<int> all(kPhi * kCos), varying;
+    std::iota(all.begin(), all.end(), 0);
+    std::vector<double> result = integrateCells(pdfs, samples, all, kSub, &varying);
+    const std::vector<double> fine = integrateCells(pdfs, samples, varying, kFine);
+    for (size_t c = 0; c < varying.size(); ++c) result[size_t(varying[c])] = fine[c];
     return result;
   }
 };
