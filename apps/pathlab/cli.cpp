@@ -27,6 +27,7 @@ struct RenderArgs {
   std::string scene;
   std::optional<int> threads;  // absent: all cores
   std::optional<int> spp, lightSamples, maxDepth;
+  std::optional<double> aperture, focalDistance;  // task 10's lens, over the scene's
   std::optional<std::string> resolution;  // -d WxH (given but empty is an error)
   std::vector<int> widthHeight;    // -r W H
   std::string output = "render.png";
@@ -116,6 +117,15 @@ int checkedCount(const char* flag, int value, int min, int max) {
   return value;
 }
 
+// A length in world units for the camera: in [min, 1e12] (the scene's coordinate limit), finite.
+float checkedLength(const char* flag, double value, double min) {
+  if (!(value >= min && value <= 1e12)) {
+    throw Error(std::string(flag) + ": expected a length in [" + (min > 0.0 ? "1e-06" : "0") + ", 1e12], got " +
+                std::to_string(value));
+  }
+  return float(value);
+}
+
 int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atomic<bool>& rendering) {
   Scene scene = loadSceneArg(args.scene);
   RenderSettings& settings = scene.render;
@@ -124,6 +134,8 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   if (args.maxDepth) settings.maxDepth = checkedCount("-m", *args.maxDepth, 0, 1024);
   if (!args.seed.empty()) settings.seed = parseSeed(args.seed);
   applyResolution(settings, args.resolution, args.widthHeight);
+  if (args.aperture) scene.camera.apertureRadius = checkedLength("--aperture", *args.aperture, 0.0);
+  if (args.focalDistance) scene.camera.focalDistance = checkedLength("--focal-distance", *args.focalDistance, 1e-6);
   RenderOptions options;
   if (args.threads) options.threads = checkedCount("-t", *args.threads, 1, 1024);
   options.progress = !args.quiet;
@@ -268,6 +280,11 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel, std::atomic<b
   app.add_option("-r", render.widthHeight, "Resolution as two numbers: -r WIDTH HEIGHT")
       ->expected(2)
       ->allow_extra_args(false);  // exactly two values, then the scene
+  app.add_option("--aperture", render.aperture,
+                 "Task 10: the lens's radius in scene units (0: a pinhole), over the scene's aperture_radius");
+  app.add_option("--focal-distance", render.focalDistance,
+                 "Task 10: the distance in focus, along the view (default: the scene's focal_distance, else the "
+                 "distance to look_at)");
   app.add_option("-o,-w,--output", render.output, "Output image: .png (display) or .exr (linear)");
   app.add_option("--seed", render.seed, "Random seed");
   app.add_option("--ref", render.reference, "Reference image: print RMSE and relMSE after the render");
@@ -288,7 +305,7 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel, std::atomic<b
 
   DebugArgs debug;
   CLI::App* debugCommand = app.add_subcommand("debug", "Write a task's debugger view to a PNG");
-  debugCommand->add_option("--task", debug.task, "Task number 1-7");
+  debugCommand->add_option("--task", debug.task, "Task number (see --list)");
   debugCommand->add_option("--view", debug.view, "View name (see --list)");
   debugCommand->add_option("scene", debug.scene, "Scene file; omit for the built-in Cornell box");
   debugCommand->add_option("-d", debug.resolution, "Resolution WIDTHxHEIGHT");

@@ -80,6 +80,13 @@ void checkSceneLimits(const Scene& scene) {
   for (const auto& [name, point] : {std::pair{"position", camera.position}, std::pair{"look_at", camera.lookAt}}) {
     if (!withinLimits(point)) throw Error(file + "camera " + name + " " + formatted(point) + " is out of range" + limit);
   }
+  if (!(camera.apertureRadius >= 0.0f && camera.apertureRadius <= kMaxSceneCoordinate) ||
+      !(camera.focalDistance > 0.0f && std::isfinite(camera.focalDistance))) {
+    char lens[96];
+    std::snprintf(lens, sizeof lens, "aperture radius %g, focal distance %g", double(camera.apertureRadius),
+                  double(camera.focalDistance));
+    throw Error(file + "camera lens (" + lens + "): expected a radius in [0, 1e12] and a positive distance");
+  }
   const Vec3 forward = camera.lookAt - camera.position;
   if (!(glm::length(forward) > 0.0f) || !(glm::length(glm::cross(forward, camera.up)) > 0.0f) ||
       !isFinite(glm::normalize(glm::cross(forward, camera.up)))) {

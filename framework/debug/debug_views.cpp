@@ -40,6 +40,7 @@ std::vector<DebugView> allDebugViews() {
   addEnvironmentViews(views);
   addMicrofacetViews(views);
   addMisViews(views);
+  addThinLensViews(views);
   return views;
 }
 

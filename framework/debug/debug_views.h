@@ -81,5 +81,6 @@ void addMirrorGlassViews(std::vector<DebugView>& views);    // tasks/06-mirror-g
 void addEnvironmentViews(std::vector<DebugView>& views);    // tasks/07-environment/debugger.cpp
 void addMicrofacetViews(std::vector<DebugView>& views);     // tasks/08-microfacet/debugger.cpp
 void addMisViews(std::vector<DebugView>& views);            // tasks/09-mis/debugger.cpp
+void addThinLensViews(std::vector<DebugView>& views);     // tasks/10-thin-lens/debugger.cpp
 
 }  // namespace pathlab

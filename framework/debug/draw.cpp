@@ -85,6 +85,22 @@ void fillRect(Image& image, Point2 min, Point2 max, Color color) {
       image.at(x, y) = color;
 }
 
+namespace {
+constexpr int kLabelHeight = 20;
+}
+
+TileSheet::TileSheet(int columns, int rows, int tileWidth, int tileHeight)
+    : width_(tileWidth), height_(tileHeight), columns_(columns),
+      image_(columns * tileWidth, rows * (tileHeight + kLabelHeight), Color(0.02f)) {}
+
+void TileSheet::place(const Image& tile, int index, const std::string& label) {
+  const int x0 = (index % columns_) * width_, y0 = (index / columns_) * (height_ + kLabelHeight);
+  for (int y = 0; y < std::min(height_, tile.height); ++y)
+    for (int x = 0; x < std::min(width_, tile.width); ++x) image_.at(x0 + x, y0 + kLabelHeight + y) = tile.at(x, y);
+  const int scale = 8 + 12 * int(label.size()) <= width_ ? 2 : 1;  // 6 pixels a letter at scale 1: fit the tile
+  drawText(image_, Point2(float(x0 + 4), float(y0 + 4)), label, Color(0.9f), scale);
+}
+
 Image enlarge(const Image& image, int factor) {
   Image out(image.width * factor, image.height * factor);
   for (int y = 0; y < out.height; ++y)

@@ -43,6 +43,20 @@ class CameraProjection {
   IVec2 resolution_;
 };
 
+// Tiles of equal size in a grid, each under a one-line label (views that
+// compare several renders side by side).
+class TileSheet {
+ public:
+  TileSheet(int columns, int rows, int tileWidth, int tileHeight);
+  // Tile `index` (row by row), cropped to the tile size, with its label.
+  void place(const Image& tile, int index, const std::string& label);
+  Image& image() { return image_; }
+
+ private:
+  int width_, height_, columns_;
+  Image image_;
+};
+
 // Nearest-neighbour enlargement by an integer factor.
 Image enlarge(const Image& image, int factor);
 

@@ -9,6 +9,7 @@
 #include "tasks/direct_lighting.h"
 #include "tasks/mis.h"
 #include "tasks/path_tracing.h"
+#include "tasks/thin_lens.h"
 #include "util/parallel.h"
 #include "util/progress.h"
 
@@ -62,6 +63,7 @@ std::string tasksLightingRender(const Scene& scene, Integrator integrator) {
   if (lit && scene.environment && !scene.environment->image.pixels.empty()) tasks.push_back(7);
   if (lit && has([](const Material& m) { return m.isRough(); })) tasks.push_back(8);
   if (mis) tasks.push_back(9);
+  if (scene.camera.apertureRadius > 0.0f) tasks.push_back(10);
   // Runs of consecutive tasks as "a-b".
   std::string text;
   for (size_t i = 0; i < tasks.size();) {
@@ -133,7 +135,10 @@ Color estimatePixelSample(TraceContext& context, const RenderOptions& options, c
   const IVec2 pixel = context.pixel;
   Sampler sampler = pixelSampler(settings, pixel, sample, options.sampler);
   const Point2 raster = pixelSamplePosition(pixel, sampler.next2D());
-  const Ray ray = generateCameraRay(context.scene.camera, basis, raster, {settings.width, settings.height});
+  const Camera& camera = context.scene.camera;
+  Ray ray = generateCameraRay(camera, basis, raster, {settings.width, settings.height});
+  // A pinhole camera draws no lens sample: its renders are task 1's alone.
+  if (camera.apertureRadius > 0.0f) ray = generateThinLensRay(camera, basis, ray, sampler.next2D());
   return estimateRadiance(context, options, ray, sampler);
 }
 

@@ -389,6 +389,7 @@ class ColladaReader {
     camera.lookAt = center;
     camera.position = center - forward * distance;
     camera.up = trueUp;
+    camera.focalDistance = std::max(distance, 1e-3f);  // COLLADA has no lens; --aperture opens one, focused at lookAt
     const double height = std::max(1.0, std::round(double(scene_.render.width) / double(aspect)));
     if (height > double(kMaxImageSide)) {
       char asked[96];

@@ -44,6 +44,13 @@ Camera parseCamera(const Object& o) {
   camera.lookAt = o.vec3("look_at", camera.lookAt);
   camera.up = o.vec3("up", camera.up);
   camera.vfovDegrees = o.number("vfov", camera.vfovDegrees);
+  camera.apertureRadius = o.number("aperture_radius", camera.apertureRadius);
+  if (!(camera.apertureRadius >= 0.0f) || !std::isfinite(camera.apertureRadius)) {
+    o.fail(o.field("aperture_radius"), "expected a radius >= 0 (0: a pinhole), got " + o.at("aperture_radius").dump());
+  }
+  // Absent: focused at look_at (a position out of range is reported by the scene's checks).
+  camera.focalDistance = o.has("focal_distance") ? o.positive("focal_distance", 1.0f)
+                                                 : float(glm::length(glm::dvec3(camera.lookAt) - glm::dvec3(camera.position)));
   if (!(camera.vfovDegrees > 0.0f && camera.vfovDegrees < 180.0f)) {
     o.fail(o.field("vfov"), "expected degrees in (0, 180), got " + o.at("vfov").dump());  // a number
   }
@@ -292,7 +299,8 @@ Scene parseScene(const Source& source, const Json& root) {
   Scene scene;
   scene.source = source.name;
   if (top.has("camera")) scene.camera = parseCamera(Object(source, top.at("camera"), "camera",
-                                                           {"position", "look_at", "up", "vfov"}));
+                                                           {"position", "look_at", "up", "vfov", "aperture_radius",
+                                                            "focal_distance"}));
   if (top.has("render")) {
     scene.render = parseRender(Object(source, top.at("render"), "render",
                                       {"width", "height", "spp", "light_samples", "max_depth", "seed"}));

@@ -47,29 +47,10 @@ RenderOptions estimatorOptions(const DebugViewRequest& request, MisEstimator est
   return options;
 }
 
-// Tiles in a grid with a label above each.
-class Sheet {
- public:
-  Sheet(int columns, int rows, int width, int height)
-      : width_(width), height_(height), columns_(columns), image_(columns * width, rows * (height + 20), Color(0.02f)) {}
-  void place(const Image& tile, int index, const std::string& label) {
-    const int x0 = (index % columns_) * width_, y0 = (index / columns_) * (height_ + 20);
-    for (int y = 0; y < std::min(height_, tile.height); ++y)
-      for (int x = 0; x < std::min(width_, tile.width); ++x) image_.at(x0 + x, y0 + 20 + y) = tile.at(x, y);
-    const int scale = 8 + 12 * int(label.size()) <= width_ ? 2 : 1;  // 6 pixels a letter at scale 1: fit the tile
-    drawText(image_, Point2(float(x0 + 4), float(y0 + 4)), label, Color(0.9f), scale);
-  }
-  Image& image() { return image_; }
-
- private:
-  int width_, height_, columns_;
-  Image image_;
-};
-
 DebugOutput compareView(const DebugViewRequest& request) {
   Scene scene = tileScene(request);
   const int spp = scene.render.samplesPerPixel;
-  Sheet sheet(3, 2, scene.render.width, scene.render.height);
+  TileSheet sheet(3, 2, scene.render.width, scene.render.height);
   std::string report = "equal samples (" + std::to_string(spp) + " spp):";
   double misSeconds = 0.0;
   double secondsPerSpp[3] = {};
@@ -151,7 +132,7 @@ DebugOutput weightsView(const DebugViewRequest& request) {
       share.at(x, y) = both > 0.0f ? Color(p.x / both, p.y / both, 0.0f) : Color(0.05f);
     }
   }
-  Sheet sheet(2, 2, w, h);
+  TileSheet sheet(2, 2, w, h);
   sheet.place(light, 0, "LIGHT SAMPLE x W");
   sheet.place(bsdf, 1, "BSDF SAMPLE x W");
   sheet.place(sum, 2, "BOTH: DIRECT LIGHT");
@@ -197,7 +178,7 @@ DebugOutput varianceView(const DebugViewRequest& request) {
     variances.push_back(std::move(variance));
   }
   // log10 of the variance, from 1e-4 (dark) to 1e2 (bright), on one scale.
-  Sheet sheet(3, 1, w, h);
+  TileSheet sheet(3, 1, w, h);
   for (size_t k = 0; k < variances.size(); ++k) {
     Image& image = variances[k];
     for (Color& c : image.pixels) c = colorMap(std::clamp((std::log10(std::max(c.x, 1e-30f)) + 4.0f) / 6.0f, 0.0f, 1.0f));

@@ -60,7 +60,7 @@ def configured_tasks():
     if not os.path.exists(cli):
         return None
     out = subprocess.run([cli, "--version"], capture_output=True, text=True, timeout=30)
-    pairs = re.findall(r"(\d):(reference|student)", out.stdout)
+    pairs = re.findall(r"(\d+):(reference|student)", out.stdout)
     return {n: ("yours" if v == "student" else "reference") for n, v in pairs} or None
 
 

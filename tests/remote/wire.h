@@ -198,7 +198,7 @@ void Writer::put(const T& value) { write(*this, value); }
 
 PATHLAB_WIRE_FIELDS(Interval, s.min, s.max);
 PATHLAB_WIRE_FIELDS(Ray, s.origin, s.direction);
-PATHLAB_WIRE_FIELDS(Camera, s.position, s.lookAt, s.up, s.vfovDegrees);
+PATHLAB_WIRE_FIELDS(Camera, s.position, s.lookAt, s.up, s.vfovDegrees, s.apertureRadius, s.focalDistance);
 PATHLAB_WIRE_FIELDS(CameraBasis, s.forward, s.right, s.up);
 PATHLAB_WIRE_FIELDS(TriangleHit, s.t, s.b1, s.b2);
 PATHLAB_WIRE_FIELDS(SurfacePoint, s.point, s.geometricNormal, s.shadingNormal);
