@@ -78,10 +78,31 @@ Strategy strategy(const std::string& name) {
                : name == "bsdf"        ? "task 9's path tracer, the BSDF sample alone"
                : name == "mis-balance" ? "task 9's path tracer, MIS of light and BSDF samples, balance heuristic"
                                        : "task 9's path tracer, MIS of light and BSDF samples, power heuristic";
+  } else if (name == "adaptive" || name.rfind("adaptive-", 0) == 0) {
+    // Task 11: each pixel stops once its 95 % interval is within the
+    // tolerance (adaptive-TOL; 0.2 by default: on CBspheres.dae it pays at
+    // 30 s and at 120 s, docs/performance.md); the curve's spp is each
+    // render's maximum, a sixteenth of it the minimum.
+    AdaptiveSettings adaptive;
+    adaptive.tolerance = 0.2;
+    if (name != "adaptive") {
+      const std::string text = name.substr(9);
+      char* end = nullptr;
+      adaptive.tolerance = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0' || !(adaptive.tolerance > 0.0 && adaptive.tolerance <= 10.0)) {
+        throw Error("--strategies: \"" + name + "\": expected adaptive-TOLERANCE with a tolerance in (0, 10]");
+      }
+    }
+    s.options.adaptive = adaptive;
+    s.tasks = {11};
+    char what[160];
+    std::snprintf(what, sizeof what, "task 11's adaptive sampling, tolerance %g (spp: the maximum; the minimum "
+                  "a sixteenth of it, batches of 16)", adaptive.tolerance);
+    s.change = what;
   } else {
     throw Error("--strategies: unknown strategy \"" + name +
                 "\" (reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, light, bsdf, mis-balance, mis-power, "
-                "env-importance, env-uniform, independent, stratified)");
+                "env-importance, env-uniform, independent, stratified, adaptive, adaptive-TOL)");
   }
   return s;
 }
@@ -107,6 +128,10 @@ Scene probeScene(const Scene& scene) {
 Image probeImage(const Scene& probe, RenderOptions options, int threads) {
   options.threads = threads;
   options.progress = false;
+  if (options.adaptive) {  // adaptive: batches of 2 from 2 samples, so that pixels can stop before kProbeSpp
+    options.adaptive->maxSpp = kProbeSpp;
+    options.adaptive->batch = options.adaptive->minSpp = 2;
+  }
   return pathlab::render(probe, options).image;
 }
 
@@ -185,7 +210,8 @@ Availability judge(const Strategy& s, const Scene& scene, const LinkedTasks& lin
 }
 
 struct Point {
-  int spp;
+  int spp;         // samples per pixel asked for (adaptive: the maximum)
+  double samples;  // samples taken, per pixel
   double seconds, rmse, relMse;
   std::optional<double> efficiency;  // 1 / (relMSE x seconds); none at zero error or time
 };
@@ -201,12 +227,26 @@ std::optional<double> convergenceSlope(const std::vector<Point>& curve) {
   double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (const Point& p : curve) {
     if (!(p.relMse > 0.0) || !std::isfinite(p.relMse)) continue;
-    const double x = std::log(double(p.spp)), y = std::log(p.relMse);
+    const double x = std::log(p.samples), y = std::log(p.relMse);
     n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
   }
   const double denominator = n * sxx - sx * sx;
   if (n < 3 || !(denominator > 0.0)) return std::nullopt;
   return (n * sxy - sx * sy) / denominator;
+}
+
+// A curve's relMSE at render time `seconds`: straight between the two points
+// around it in log time and log error (where plain Monte Carlo is a line of
+// slope -1); none when the curve does not reach that far on both sides.
+std::optional<double> relMseAtTime(const std::vector<Point>& curve, double seconds) {
+  for (size_t k = 0; k + 1 < curve.size(); ++k) {
+    const Point &a = curve[k], &b = curve[k + 1];
+    if (!(a.seconds <= seconds && seconds <= b.seconds)) continue;
+    if (!(a.relMse > 0.0 && b.relMse > 0.0 && a.seconds > 0.0) || b.seconds == a.seconds) return std::nullopt;
+    const double f = std::log(seconds / a.seconds) / std::log(b.seconds / a.seconds);
+    return std::exp(std::log(a.relMse) + f * std::log(b.relMse / a.relMse));
+  }
+  return std::nullopt;
 }
 
 std::string csvQuote(const std::string& text) {
@@ -237,9 +277,22 @@ int runConvergeBench(const ConvergeOptions& options) {
   // interleave in order when both go to one log.
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   Scene scene = loadScene(options.scene);
+  // A changed resolution or depth is part of every file name: a cached
+  // reference is only reused for the same picture.
+  std::string variant;
+  if (!options.resolution.empty()) {
+    checkResolution(options.resolution[0], options.resolution[1], "-r");
+    scene.render.width = options.resolution[0], scene.render.height = options.resolution[1];
+    variant += "-" + std::to_string(scene.render.width) + "x" + std::to_string(scene.render.height);
+  }
+  if (options.maxDepth >= 0) {
+    if (options.maxDepth > 1024) throw Error("-m: at most 1024, as in a scene file");
+    scene.render.maxDepth = options.maxDepth;
+    variant += "-m" + std::to_string(options.maxDepth);
+  }
   const int threads = options.threads > 0 ? options.threads : defaultThreadCount();
   createFolders(options.outDir);
-  const std::string stem = fs::path(options.scene).stem().string();
+  const std::string stem = fs::path(options.scene).stem().string() + variant;
   const LinkedTasks linked = linkedTasks();
   const std::string code = describeAllTasks(linked);
   std::printf("code: %s\n", code.c_str());
@@ -247,6 +300,11 @@ int runConvergeBench(const ConvergeOptions& options) {
   std::vector<Strategy> strategies;
   std::stringstream list(options.strategies);
   for (std::string name; std::getline(list, name, ',');) strategies.push_back(strategy(name));
+  // Every render walks the tree as `pathlab` would with this build (its
+  // --accel default), so that the seconds here are a user's seconds.
+  RenderOptions defaults;
+  defaults.traversal = defaultTraversal(linkedTaskSummary());
+  for (Strategy& s : strategies) s.options.traversal = defaults.traversal;
 
   // Which strategies the linked code implements: probe each change first
   // (cheap), so that nothing unavailable is timed or compared.
@@ -256,7 +314,7 @@ int runConvergeBench(const ConvergeOptions& options) {
   for (size_t i = 0; i < strategies.size(); ++i) {
     const Strategy& s = strategies[i];
     if (s.tasks.empty()) continue;  // the default strategy
-    if (!probeDefault) probeDefault = probeImage(probe, RenderOptions{}, threads);
+    if (!probeDefault) probeDefault = probeImage(probe, defaults, threads);
     const bool same = identical(probeImage(probe, s.options, threads), *probeDefault);
     availability[i] = judge(s, scene, linked, same);
     if (availability[i].available) {
@@ -275,7 +333,8 @@ int runConvergeBench(const ConvergeOptions& options) {
 
   // The converged reference image: the linked code's default (best)
   // strategy, another seed, cached.
-  const Strategy referenceStrategy = strategy(options.referenceStrategy);
+  Strategy referenceStrategy = strategy(options.referenceStrategy);
+  referenceStrategy.options.traversal = defaults.traversal;
   const std::string referenceStem =
       referenceStrategy.name == "reference" ? stem : stem + "-" + referenceStrategy.name;
   const fs::path referencePath =
@@ -316,7 +375,7 @@ int runConvergeBench(const ConvergeOptions& options) {
 
   const fs::path csvPath = fs::path(options.outDir) / (stem + "-converge.csv");
   std::ofstream csv(csvPath);
-  csv << "strategy,spp,seconds,rmse,relmse,efficiency,available,reason\n";
+  csv << "strategy,spp,seconds,rmse,relmse,efficiency,available,reason,samples_per_pixel\n";
   auto number = [](std::optional<double> v) {
     std::ostringstream out;
     if (v) out << *v;
@@ -333,27 +392,39 @@ int runConvergeBench(const ConvergeOptions& options) {
   for (size_t i = 0; i < strategies.size(); ++i) {
     Strategy s = strategies[i];
     if (!availability[i].available) {
-      csv << s.name << ",0,nan,nan,nan,nan,false," << csvQuote(availability[i].reason) << '\n';
+      csv << s.name << ",0,nan,nan,nan,nan,false," << csvQuote(availability[i].reason) << ",nan\n";
       continue;
     }
     s.options.threads = threads;
     s.options.progress = false;
     double spent = 0.0;
-    for (int spp = 1; spp <= (1 << 16) && spent < options.budgetSeconds; spp *= 2) {
+    // Past the budget until the curve passes the last equal-time point.
+    const double lastTime =
+        options.equalTimes.empty() ? 0.0 : *std::max_element(options.equalTimes.begin(), options.equalTimes.end());
+    auto more = [&] { return spent < options.budgetSeconds || curves[i].empty() || curves[i].back().seconds < lastTime; };
+    for (int spp = 1; spp <= (1 << 16) && more(); spp *= 2) {
       Scene run = scene;
       run.render.samplesPerPixel = spp;
       run.render.seed = 1;
+      if (s.options.adaptive) {  // at most spp: batches of 16 (fewer below), from a sixteenth of it
+        AdaptiveSettings& a = *s.options.adaptive;
+        a.maxSpp = uint32_t(spp);
+        a.batch = uint32_t(std::min(spp, 16));
+        a.minSpp = std::max(a.batch, uint32_t(spp / 16) / a.batch * a.batch);
+      }
       RenderResult result = pathlab::render(run, s.options);
       const ImageError error = compareImages(result.image, reference);
-      const Point point{spp, result.stats.seconds, error.rmse, error.relMse,
+      const double taken = double(result.stats.samples) / (double(run.render.width) * double(run.render.height));
+      const Point point{spp, taken, result.stats.seconds, error.rmse, error.relMse,
                         efficiencyOf(error.relMse, result.stats.seconds)};
       curves[i].push_back(point);
       spent += result.stats.seconds;
       csv << s.name << ',' << spp << ',' << point.seconds << ',' << point.rmse << ',' << point.relMse << ','
-          << number(point.efficiency) << ",true," << csvQuote(availability[i].note) << '\n';
-      std::printf("%-18s %6d spp %8.3f s  RMSE %.5f  relMSE %.6f  efficiency %s\n", s.name.c_str(), spp,
-                  point.seconds, point.rmse, point.relMse,
-                  brief(point.efficiency, "- (zero error)").c_str());
+          << number(point.efficiency) << ",true," << csvQuote(availability[i].note) << ',' << taken << '\n';
+      char took[48] = "";  // an adaptive render takes fewer
+      if (s.options.adaptive) std::snprintf(took, sizeof took, " (took %.1f)", taken);
+      std::printf("%-18s %6d spp%s %8.3f s  RMSE %.5f  relMSE %.6f  efficiency %s\n", s.name.c_str(), spp, took,
+                  point.seconds, point.rmse, point.relMse, brief(point.efficiency, "- (zero error)").c_str());
     }
   }
   csv.close();
@@ -369,7 +440,7 @@ int runConvergeBench(const ConvergeOptions& options) {
     for (size_t i = 0; i < strategies.size(); ++i) {
       for (const Point& p : curves[i]) {
         if (!p.efficiency) continue;  // zero error: nothing to draw on log axes
-        plotCsv << strategies[i].name << ',' << p.spp << ',' << p.seconds << ',' << p.rmse << ',' << p.relMse << ','
+        plotCsv << strategies[i].name << ',' << p.samples << ',' << p.seconds << ',' << p.rmse << ',' << p.relMse << ','
                 << *p.efficiency << '\n';
         ++measured;
       }
@@ -414,8 +485,8 @@ int runConvergeBench(const ConvergeOptions& options) {
     std::vector<double> perSample, rate;
     for (size_t p = curves[i].size() >= 3 ? curves[i].size() - 3 : 0; p < curves[i].size(); ++p) {
       const Point& point = curves[i][p];
-      if (point.relMse > 0.0 && std::isfinite(point.relMse)) perSample.push_back(point.relMse * point.spp);
-      if (point.seconds > 0.0) rate.push_back(double(point.spp) * pixels / point.seconds);
+      if (point.relMse > 0.0 && std::isfinite(point.relMse)) perSample.push_back(point.relMse * point.samples);
+      if (point.seconds > 0.0) rate.push_back(point.samples * pixels / point.seconds);
     }
     std::sort(perSample.begin(), perSample.end()), std::sort(rate.begin(), rate.end());
     if (!perSample.empty()) errorPerSample[i] = perSample[perSample.size() / 2];
@@ -442,12 +513,34 @@ int runConvergeBench(const ConvergeOptions& options) {
       comparison = "no comparison of " + first + " with " + second + ": zero error (is the image black?)";
     } else {
       char line[256];
-      std::snprintf(line, sizeof line, "%s needs %.1fx less time than %s for the same relMSE", first.c_str(),
-                    *efficiency[0] / *efficiency[1], second.c_str());
+      const double ratio = *efficiency[0] / *efficiency[1];
+      std::snprintf(line, sizeof line, "%s needs %.1fx less time than %s for the same relMSE",
+                    (ratio >= 1.0 ? first : second).c_str(), ratio >= 1.0 ? ratio : 1.0 / ratio,
+                    (ratio >= 1.0 ? second : first).c_str());
       comparison = line;
     }
     std::printf("%s\n", comparison.c_str());
   }
+  // Equal time: each strategy's relMSE at the same render time; the ratio of
+  // the first's to another's is that one's efficiency over the first's there.
+  Json equalTime = Json::array();
+  for (double seconds : options.equalTimes) {
+    std::printf("at %g s:", seconds);
+    Json entry = {{"seconds", seconds}};
+    Json errors = Json::object();
+    std::optional<double> first;
+    for (size_t i = 0; i < strategies.size(); ++i) {
+      const std::optional<double> relMse = availability[i].available ? relMseAtTime(curves[i], seconds) : std::nullopt;
+      if (i == 0) first = relMse;
+      errors[strategies[i].name] = relMse ? Json(*relMse) : Json(nullptr);
+      std::printf("  %s relMSE %s", strategies[i].name.c_str(), brief(relMse, "(not reached)").c_str());
+      if (i > 0 && first && relMse) std::printf(" (efficiency %.2fx %s's)", *first / *relMse, strategies[0].name.c_str());
+    }
+    std::printf("\n");
+    entry["relmse"] = errors;
+    equalTime.push_back(entry);
+  }
+
   std::string reached;
   std::vector<std::string> tags;  // each TODO once (a tag may mark several sites)
   for (const TodoReached& todo : todosReached()) {
@@ -480,7 +573,7 @@ int runConvergeBench(const ConvergeOptions& options) {
       for (int n : s.tasks) tasks[std::to_string(n)] = codeName(linked[n]);
       Json points = Json::array();
       for (const Point& p : curves[i]) {
-        points.push_back({{"spp", p.spp}, {"seconds", p.seconds}, {"rmse", p.rmse}, {"relmse", p.relMse},
+        points.push_back({{"spp", p.spp}, {"samples_per_pixel", p.samples}, {"seconds", p.seconds}, {"rmse", p.rmse}, {"relmse", p.relMse},
                           {"efficiency", p.efficiency ? Json(*p.efficiency) : Json(nullptr)}});
       }
       Json entry = {{"name", s.name},
@@ -497,6 +590,7 @@ int runConvergeBench(const ConvergeOptions& options) {
       entries.push_back(entry);
     }
     json["strategies"] = entries;
+    json["equal_time"] = equalTime;
     json["comparison"] = comparison.empty() ? Json(nullptr) : Json(comparison);
     std::printf("%s\n", json.dump().c_str());
   }

@@ -2,7 +2,8 @@
 //   pathlab-bench bvh [MESH.obj | --triangles N] [--threads N] [--json]
 //   pathlab-bench render [--scene FILE] [--quick | --spp N] [--threads N] [--accel task3|fast]
 //                        [--sampler sobol|stratified|independent] [--json]
-//   pathlab-bench converge SCENE [--strategies a,b] [--budget SECONDS] [--out DIR] [--json]
+//   pathlab-bench converge SCENE [--strategies a,b] [--budget SECONDS] [--at SECONDS...] [-r W H] [-m DEPTH]
+//                          [--out DIR] [--json]
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -73,7 +74,7 @@ int main(int argc, char** argv) {
   CLI::App* convergeCommand = app.add_subcommand(
       "converge", "Error against time for sampling strategies (those the linked task code ignores: unavailable)");
   convergeCommand->add_option("scene", converge.scene, "Scene file")->required();
-  convergeCommand->add_option("--strategies", converge.strategies, "Comma-separated: reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, light, bsdf, mis-balance, mis-power, env-importance, env-uniform, independent, stratified");
+  convergeCommand->add_option("--strategies", converge.strategies, "Comma-separated: reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, light, bsdf, mis-balance, mis-power, env-importance, env-uniform, independent, stratified, adaptive (task 11, tolerance 0.2), adaptive-TOL");
   convergeCommand->add_option("--budget", converge.budgetSeconds, "Render seconds per strategy (default 60)")
       ->check(kFinitePositive);
   convergeCommand->add_option("--out", converge.outDir, "Output folder for the CSV and the cached reference");
@@ -81,6 +82,14 @@ int main(int argc, char** argv) {
       ->check(wholeNumber(1));
   convergeCommand->add_option("--reference-strategy", converge.referenceStrategy,
                               "The strategy that renders the reference (default: reference, the course's recipe)");
+  convergeCommand->add_option("-r", converge.resolution, "Resolution instead of the scene's: -r WIDTH HEIGHT")
+      ->expected(2);
+  convergeCommand->add_option("-m,--max-depth", converge.maxDepth, "Maximum ray depth instead of the scene's")
+      ->check(wholeNumber(0));
+  convergeCommand->add_option("--at", converge.equalTimes,
+                              "Compare at these render times (seconds, e.g. --at 30 120): each strategy's relMSE "
+                              "there, and the first's efficiency over each other's")
+      ->check(kFinitePositive);
   convergeCommand->add_option("--threads", converge.threads, "Threads (default: all cores)")->check(wholeNumber(0));
   convergeCommand->add_flag("--json", converge.json, "Print one JSON object as the last line");
   try {

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <thread>
 
 #include "debug/debug_views.h"
+#include "debug/draw.h"
 #include "lab_cli.h"
 #include "render/render.h"
 #include "scene/scene_io.h"
@@ -28,6 +30,9 @@ struct RenderArgs {
   std::optional<int> threads;  // absent: all cores
   std::optional<int> spp, lightSamples, maxDepth;
   std::optional<double> aperture, focalDistance;  // task 10's lens, over the scene's
+  std::optional<double> adaptive;                 // task 11: the tolerance; -s is then the maximum
+  std::optional<int> minSpp, batch;
+  std::string sppMap;  // empty: beside the output, NAME.spp.png
   std::optional<std::string> resolution;  // -d WxH (given but empty is an error)
   std::vector<int> widthHeight;    // -r W H
   std::string output = "render.png";
@@ -117,6 +122,12 @@ int checkedCount(const char* flag, int value, int min, int max) {
   return value;
 }
 
+// NAME.png -> NAME.spp.png, in the same folder.
+std::string sppMapBeside(const std::string& output) {
+  std::filesystem::path path(output);
+  return (path.parent_path() / (path.stem().string() + ".spp.png")).string();
+}
+
 // A length in world units for the camera: in [min, 1e12] (the scene's coordinate limit), finite.
 float checkedLength(const char* flag, double value, double min) {
   if (!(value >= min && value <= 1e12)) {
@@ -154,6 +165,32 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   if (!sampler) throw Error("--sampler: unknown sampler " + inQuotes(args.sampler) + " (sobol, stratified, independent)");
   options.sampler = *sampler;
   checkOutputPath(args.output);
+  if (!args.adaptive && (args.minSpp || args.batch || !args.sppMap.empty())) {
+    throw Error("--min-spp, --batch and --spp-map go with --adaptive TOLERANCE");
+  }
+  std::string sppMapPath;
+  if (args.adaptive) {
+    AdaptiveSettings adaptive;
+    adaptive.tolerance = *args.adaptive;
+    if (!(adaptive.tolerance > 0.0 && adaptive.tolerance <= 1e6)) {
+      throw Error("--adaptive: expected a tolerance in (0, 1e6], got " + std::to_string(*args.adaptive));
+    }
+    const int most = settings.samplesPerPixel;  // -s: the most a pixel may take
+    adaptive.maxSpp = uint32_t(most);
+    adaptive.batch = uint32_t(args.batch ? checkedCount("--batch", *args.batch, 1, most) : std::min(32, most));
+    adaptive.minSpp = uint32_t(args.minSpp ? checkedCount("--min-spp", *args.minSpp, 1, most)
+                                           : std::max(int(adaptive.batch), std::min(64, most) / int(adaptive.batch) *
+                                                                               int(adaptive.batch)));
+    if (const std::string problem = adaptiveSettingsProblem(adaptive); !problem.empty()) {
+      char given[128];
+      std::snprintf(given, sizeof given, " (-s %u, --min-spp %u, --batch %u)", adaptive.maxSpp, adaptive.minSpp,
+                    adaptive.batch);
+      throw Error("--adaptive: " + problem + given);
+    }
+    options.adaptive = adaptive;
+    sppMapPath = args.sppMap.empty() ? sppMapBeside(args.output) : args.sppMap;
+    checkOutputPath(sppMapPath);
+  }
   std::optional<Image> reference;  // read and checked before an hour of rendering, not after
   if (!args.reference.empty()) {
     reference = readImage(args.reference);
@@ -176,6 +213,9 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   writeImage(result.image, args.output, {{"pathlab:spp", std::to_string(stats.completedSpp)},
                                          {"pathlab:scene", scene.source}});
 
+  if (options.adaptive) {
+    writeImage(sampleMapImage(result.sampleMap, options.adaptive->minSpp, options.adaptive->maxSpp), sppMapPath);
+  }
   if (stats.nonFiniteSamples > 0) {
     printWarning(std::to_string(stats.nonFiniteSamples) + " samples were NaN or Inf (first at pixel " +
                  std::to_string(stats.firstNonFinitePixel->x) + "," + std::to_string(stats.firstNonFinitePixel->y) +
@@ -194,6 +234,15 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
                 formatRate(double(stats.samples) / stats.seconds).c_str(),
                 formatRate(double(stats.rays) / stats.seconds).c_str());
     std::printf("lit by tasks %s\n", tasksLightingRender(scene, options.integrator).c_str());
+    if (options.adaptive) {
+      const SampleMap& map = result.sampleMap;
+      const size_t confident = size_t(std::count(map.confident.begin(), map.confident.end(), uint8_t(1)));
+      std::printf("adaptive (task 11, tolerance %g, batches of %u, %u to %u spp): mean %.1f spp, %.1f %% of pixels "
+                  "confident, the rest at the maximum; spp map %s\n",
+                  options.adaptive->tolerance, options.adaptive->batch, options.adaptive->minSpp,
+                  options.adaptive->maxSpp, double(stats.samples) / double(map.samples.size()),
+                  100.0 * double(confident) / double(map.samples.size()), sppMapPath.c_str());
+    }
   }
   std::optional<ImageError> error;
   if (reference) {
@@ -285,6 +334,12 @@ int runCli(int argc, char** argv, const std::atomic<bool>& cancel, std::atomic<b
   app.add_option("--focal-distance", render.focalDistance,
                  "Task 10: the distance in focus, along the view (default: the scene's focal_distance, else the "
                  "distance to look_at)");
+  app.add_option("--adaptive", render.adaptive,
+                 "Task 11: sample each pixel until 1.96 sigma / sqrt(n) <= TOLERANCE x mean (e.g. 0.05), in "
+                 "batches, at most -s samples; writes the samples-per-pixel map beside the image (NAME.spp.png)");
+  app.add_option("--min-spp", render.minSpp, "Task 11: the fewest samples a pixel takes (default 64, or -s)");
+  app.add_option("--batch", render.batch, "Task 11: samples between checks of the rule (default 32, or -s)");
+  app.add_option("--spp-map", render.sppMap, "Task 11: where the samples-per-pixel map goes (default NAME.spp.png)");
   app.add_option("-o,-w,--output", render.output, "Output image: .png (display) or .exr (linear)");
   app.add_option("--seed", render.seed, "Random seed");
   app.add_option("--ref", render.reference, "Reference image: print RMSE and relMSE after the render");

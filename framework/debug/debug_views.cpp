@@ -41,6 +41,7 @@ std::vector<DebugView> allDebugViews() {
   addMicrofacetViews(views);
   addMisViews(views);
   addThinLensViews(views);
+  addAdaptiveSamplingViews(views);
   return views;
 }
 

@@ -82,5 +82,6 @@ void addEnvironmentViews(std::vector<DebugView>& views);    // tasks/07-environm
 void addMicrofacetViews(std::vector<DebugView>& views);     // tasks/08-microfacet/debugger.cpp
 void addMisViews(std::vector<DebugView>& views);            // tasks/09-mis/debugger.cpp
 void addThinLensViews(std::vector<DebugView>& views);     // tasks/10-thin-lens/debugger.cpp
+void addAdaptiveSamplingViews(std::vector<DebugView>& views);  // tasks/11-adaptive-sampling/debugger.cpp
 
 }  // namespace pathlab

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "render/render.h"
 #include "util/random.h"
 
 namespace pathlab {
@@ -99,6 +100,17 @@ void TileSheet::place(const Image& tile, int index, const std::string& label) {
     for (int x = 0; x < std::min(width_, tile.width); ++x) image_.at(x0 + x, y0 + kLabelHeight + y) = tile.at(x, y);
   const int scale = 8 + 12 * int(label.size()) <= width_ ? 2 : 1;  // 6 pixels a letter at scale 1: fit the tile
   drawText(image_, Point2(float(x0 + 4), float(y0 + 4)), label, Color(0.9f), scale);
+}
+
+Image sampleMapImage(const SampleMap& map, uint32_t fewest, uint32_t most) {
+  Image image(map.width, map.height);
+  const float lo = std::log2(float(std::max(1u, fewest))), hi = std::log2(float(std::max(fewest + 1, most)));
+  for (size_t i = 0; i < map.samples.size() && i < image.pixels.size(); ++i) {
+    const float t = (std::log2(float(std::max(1u, map.samples[i]))) - lo) / (hi - lo);
+    const Color display = colorMap(std::clamp(t, 0.0f, 1.0f));
+    image.pixels[i] = {srgbToLinear(display.x), srgbToLinear(display.y), srgbToLinear(display.z)};
+  }
+  return image;
 }
 
 Image enlarge(const Image& image, int factor) {

@@ -57,6 +57,12 @@ class TileSheet {
   Image image_;
 };
 
+// An adaptive render's samples-per-pixel map (task 11) as colours: the
+// colour map over log2 of the count from `fewest` (dark) to `most` (bright),
+// stored so that a PNG shows exactly those colours.
+struct SampleMap;
+Image sampleMapImage(const SampleMap& map, uint32_t fewest, uint32_t most);
+
 // Nearest-neighbour enlargement by an integer factor.
 Image enlarge(const Image& image, int factor);
 

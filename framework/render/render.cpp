@@ -10,6 +10,7 @@
 #include "tasks/mis.h"
 #include "tasks/path_tracing.h"
 #include "tasks/thin_lens.h"
+#include "util/error.h"
 #include "util/parallel.h"
 #include "util/progress.h"
 
@@ -142,6 +143,30 @@ Color estimatePixelSample(TraceContext& context, const RenderOptions& options, c
   return estimateRadiance(context, options, ray, sampler);
 }
 
+bool RenderCounters::admit(const Color& radiance, uint64_t pixelIndex) {
+  if (isFinite(radiance)) return true;
+  nonFinite_.fetch_add(1, std::memory_order_relaxed);
+  uint64_t seen = firstNonFinite_.load();
+  while (pixelIndex < seen && !firstNonFinite_.compare_exchange_weak(seen, pixelIndex)) {
+  }
+  return false;
+}
+
+void RenderCounters::addTile(uint64_t rays, uint64_t samples) {
+  rays_.fetch_add(rays, std::memory_order_relaxed);
+  samples_.fetch_add(samples, std::memory_order_relaxed);
+}
+
+void RenderCounters::report(RenderStats& stats, int width) const {
+  stats.samples = samples_.load();
+  stats.rays = rays_.load();
+  stats.nonFiniteSamples = nonFinite_.load();
+  if (stats.nonFiniteSamples > 0) {
+    const uint64_t p = firstNonFinite_.load();
+    stats.firstNonFinitePixel = IVec2(int(p % uint64_t(width)), int(p / uint64_t(width)));
+  }
+}
+
 ProgressiveRender::ProgressiveRender(const Scene& scene, const RenderOptions& options)
     : scene_(scene),
       options_(options),
@@ -174,23 +199,14 @@ bool ProgressiveRender::step() {
         Color& pixelSum = sum_[pixelIndex];
         context.pixel = {x, y};
         for (int s = passBegin; s < passEnd; ++s) {
-          Color radiance = estimatePixelSample(context, options_, basis_, uint32_t(s));
-          if (isFinite(radiance)) {
-            pixelSum += radiance;
-          } else {
-            // Never clamp: report. A NaN sample counts as a sample of zero.
-            nonFinite_.fetch_add(1, std::memory_order_relaxed);
-            uint64_t seen = firstNonFinite_.load();
-            while (pixelIndex < seen && !firstNonFinite_.compare_exchange_weak(seen, pixelIndex)) {
-            }
-          }
+          const Color radiance = estimatePixelSample(context, options_, basis_, uint32_t(s));
+          if (counters_.admit(radiance, pixelIndex)) pixelSum += radiance;
         }
         count_[pixelIndex] = passEnd;
         tileSamples += uint64_t(passEnd - passBegin);
       }
     }
-    rays_.fetch_add(context.rays, std::memory_order_relaxed);
-    samples_.fetch_add(tileSamples, std::memory_order_relaxed);
+    counters_.addTile(context.rays, tileSamples);
     progress_->add(tileSamples);
   }, options_.cancel);
   if (options_.cancel && options_.cancel->load()) {
@@ -215,20 +231,82 @@ Image ProgressiveRender::image() const {
 RenderStats ProgressiveRender::stats() const {
   RenderStats stats;
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  stats.samples = samples_.load();
-  stats.rays = rays_.load();
-  stats.nonFiniteSamples = nonFinite_.load();
-  if (stats.nonFiniteSamples > 0) {
-    const uint64_t p = firstNonFinite_.load(), width = uint64_t(scene_.render.width);
-    stats.firstNonFinitePixel = IVec2(int(p % width), int(p / width));
-  }
+  counters_.report(stats, scene_.render.width);
   stats.completedSpp = count_.empty() ? 0 : *std::min_element(count_.begin(), count_.end());
   stats.buildSeconds = accelerator_.buildSeconds();
   stats.interrupted = stats.completedSpp < scene_.render.samplesPerPixel;
   return stats;
 }
 
+std::string adaptiveSettingsProblem(const AdaptiveSettings& a) {
+  if (!(a.tolerance > 0.0 && std::isfinite(a.tolerance))) return "the tolerance must be a positive number";
+  if (a.batch < 1) return "the batch must be at least 1 sample";
+  if (a.minSpp < a.batch || a.minSpp % a.batch != 0) return "the minimum must be a multiple of the batch";
+  if (a.maxSpp < a.minSpp || a.maxSpp % a.batch != 0) return "the maximum must be a multiple of the batch, at least the minimum";
+  return "";
+}
+
+namespace {
+
+// Task 11's render: each pixel whole, by samplePixelAdaptively. Pixels are
+// independent (sample i of a pixel is the stream (seed, pixel, i)), so the
+// image is the same for any thread count.
+RenderResult renderAdaptive(const Scene& scene, const RenderOptions& options) {
+  const AdaptiveSettings settings = *options.adaptive;
+  if (const std::string problem = adaptiveSettingsProblem(settings); !problem.empty()) {
+    throw Error("adaptive sampling: " + problem);
+  }
+  Scene run = scene;  // the Sobol sequence's length: the most a pixel may take
+  run.render.samplesPerPixel = int(settings.maxSpp);
+  const int width = run.render.width, height = run.render.height;
+  const auto start = std::chrono::steady_clock::now();
+  const Accelerator accelerator(run, options.traversal);
+  const Lights lights = Lights::fromScene(run, kLinkedTasks.environment, options.environmentSampling);
+  const CameraBasis basis = cameraBasis(run.camera);
+  RenderResult result;
+  result.image = Image(width, height);
+  SampleMap& map = result.sampleMap;
+  map.width = width, map.height = height;
+  map.samples.assign(size_t(width) * size_t(height), 0);
+  map.confident.assign(map.samples.size(), 0);
+  RenderCounters counters;
+  ProgressBar progress(uint64_t(map.samples.size()), options.progress);  // counts pixels
+  forEachTile(width, height, options.tileSize, options.threads, [&](const Tile& tile) {
+    TraceContext context(run, accelerator, lights, kLinkedTasks.lobes);
+    uint64_t tileSamples = 0;
+    for (int y = tile.begin.y; y < tile.end.y; ++y) {
+      for (int x = tile.begin.x; x < tile.end.x; ++x) {
+        const uint64_t index = uint64_t(y) * uint64_t(width) + uint64_t(x);
+        context.pixel = {x, y};
+        uint32_t calls = 0;  // counted here: the map shows what the pixel cost, whatever it reports
+        const auto sample = [&](uint32_t i) {
+          ++calls;
+          const Color radiance = estimatePixelSample(context, options, basis, i);
+          return counters.admit(radiance, index) ? radiance : Color(0.0f);
+        };
+        const AdaptivePixel pixel = samplePixelAdaptively(sample, settings);
+        result.image.pixels[index] = pixel.estimate;
+        map.samples[index] = calls;
+        map.confident[index] = pixel.confident ? 1 : 0;
+        tileSamples += calls;
+      }
+    }
+    counters.addTile(context.rays, tileSamples);
+    progress.add(uint64_t(tile.end.x - tile.begin.x) * uint64_t(tile.end.y - tile.begin.y));
+  }, options.cancel);
+  RenderStats& stats = result.stats;
+  stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  counters.report(stats, width);
+  stats.completedSpp = map.samples.empty() ? 0 : int(*std::min_element(map.samples.begin(), map.samples.end()));
+  stats.buildSeconds = accelerator.buildSeconds();
+  stats.interrupted = options.cancel && options.cancel->load();
+  return result;
+}
+
+}  // namespace
+
 RenderResult render(const Scene& scene, const RenderOptions& options) {
+  if (options.adaptive) return renderAdaptive(scene, options);
   ProgressiveRender progressive(scene, options);
   while (progressive.step()) {
   }

@@ -17,6 +17,7 @@
 #include "core/trace.h"
 #include "render/accelerator.h"
 #include "render/strategies.h"
+#include "tasks/adaptive_sampling.h"
 #include "tasks/camera_rays.h"
 #include "util/image.h"
 #include "util/random.h"
@@ -73,6 +74,22 @@ struct RenderOptions {
   bool progress = true;
   const std::atomic<bool>* cancel = nullptr;  // set from a signal handler to stop early
   RadianceEstimator estimator;  // when set, replaces the integrator (tests and debugger views render any per-sample quantity)
+  // Task 11: each pixel samples until its estimate is known well enough
+  // (samplePixelAdaptively), at most scene.render.samplesPerPixel; unset:
+  // every pixel takes that many.
+  std::optional<AdaptiveSettings> adaptive{};
+};
+
+// Why adaptive settings cannot be used (tolerance not positive, a batch of
+// 0, minSpp or maxSpp not a multiple of the batch, minSpp > maxSpp), or "".
+std::string adaptiveSettingsProblem(const AdaptiveSettings& settings);
+
+// An adaptive render's samples-per-pixel map: each pixel's count (the
+// framework's, of the samples the pixel took) and whether the rule stopped it.
+struct SampleMap {
+  int width = 0, height = 0;
+  std::vector<uint32_t> samples;
+  std::vector<uint8_t> confident;
 };
 
 struct RenderStats {
@@ -89,15 +106,32 @@ struct RenderStats {
 struct RenderResult {
   Image image;
   RenderStats stats;
+  SampleMap sampleMap{};  // adaptive renders only
 };
 
 // Radiance arriving along one camera ray: options.estimator when set, else
 // the chosen integrator (and, for paths, strategy).
 Color estimateRadiance(TraceContext& context, const RenderOptions& options, const Ray& ray, Sampler& sampler);
 
+// Every pixel at scene.render.samplesPerPixel, or adaptively (options.adaptive).
 RenderResult render(const Scene& scene, const RenderOptions& options);
 
 class ProgressBar;
+
+// What a render counts while its threads run: rays, samples, and the NaN or
+// Inf samples it leaves out (never clamped: counted as 0 and reported, with
+// the first such pixel in scanline order, whichever thread met it first).
+class RenderCounters {
+ public:
+  // True when `radiance` is finite; otherwise counts it against the pixel.
+  bool admit(const Color& radiance, uint64_t pixelIndex);
+  void addTile(uint64_t rays, uint64_t samples);
+  // Fills stats.samples, rays, nonFiniteSamples and firstNonFinitePixel.
+  void report(RenderStats& stats, int width) const;
+
+ private:
+  std::atomic<uint64_t> rays_{0}, samples_{0}, nonFinite_{0}, firstNonFinite_{UINT64_MAX};
+};
 
 // render(), one pass at a time: the GUI shows the image between passes.
 // Passes take 1, 1, 2, 4, ... samples per pixel (at most options.maxPassSpp);
@@ -128,7 +162,7 @@ class ProgressiveRender {
   std::vector<int> count_;
   int passBegin_ = 0, passSize_ = 1, passes_ = 0;
   bool cancelled_ = false;
-  std::atomic<uint64_t> rays_{0}, samples_{0}, nonFinite_{0}, firstNonFinite_{UINT64_MAX};
+  RenderCounters counters_;
   std::unique_ptr<ProgressBar> progress_;
 };
 

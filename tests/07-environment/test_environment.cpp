@@ -41,12 +41,6 @@ Point2 uvOf(const Vec3& w) {
   return Point2(float(phi / (2.0 * std::numbers::pi)), float(std::acos(std::clamp(double(w.y), -1.0, 1.0)) / std::numbers::pi));
 }
 
-std::vector<Vec2> uniformPoints(int n, uint64_t seed) {
-  std::vector<Vec2> us;
-  for (int i = 0; i < n; ++i) us.push_back(Sampler(uint32_t(i), 0, testSeed(seed)).next2D());
-  return us;
-}
-
 // Chi-square of sampleEnvironment against environmentPdf over the sphere.
 ChiSquareResult chiSquare(const std::string& name, const EnvironmentDistribution& d, int samples, uint64_t seed,
                           int* failed) {

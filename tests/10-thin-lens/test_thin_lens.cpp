@@ -89,13 +89,6 @@ AtDepth atDepth(const Ray& ray, const Camera& camera, const LensFrame& f, double
   return {t, o + t * d};
 }
 
-std::vector<Vec2> uniformPoints(int n, uint64_t seed) {
-  std::vector<Vec2> us;
-  us.reserve(size_t(n));
-  for (int i = 0; i < n; ++i) us.push_back(Sampler(uint32_t(i), 0, testSeed(seed)).next2D());
-  return us;
-}
-
 // Chi-square of points against the uniform density on the unit disk, on a
 // grid over [-1.05, 1.05]^2 (a point outside the disk lands where the
 // density is 0). Cell areas inside the disk by a fine midpoint rule.

@@ -191,6 +191,38 @@ with tempfile.TemporaryDirectory(prefix="pathlab-bench-converge-") as tmp:
             if not s["available"]:
                 check(len(mine) == 1 and mine[0]["reason"] == s["reason"], f"converge {name}: CSV reason")
 
+# ---- converge at equal time, with -r and -m ------------------------------------
+# Each curve runs on until it passes the last --at time (even past the
+# budget), and the relMSE reported there lies between its two points around it.
+with tempfile.TemporaryDirectory(prefix="pathlab-bench-equal-time-") as tmp:
+    scene_path = os.path.join(SOURCE, "media", "scenes", "cornell-spheres.json")
+    at = 0.05
+    out = run(["converge", scene_path, "--strategies", "reference,adaptive-0.2", "--budget", "0.01", "--at", str(at),
+               "-r", "40", "30", "-m", "3", "--reference-spp", "16", "--out", tmp, "--json"], 300)
+    if check(out.returncode == 0, f"converge --at: pathlab-bench exited with {out.returncode}: {out.stderr[-300:]}"):
+        result = json.loads(out.stdout.strip().splitlines()[-1])
+        check(os.path.basename(result["reference_image"]["path"]) == "cornell-spheres-40x30-m3-reference-16spp.exr",
+              f"converge -r -m: the cached reference's name {result['reference_image']['path']} does not say 40x30, -m 3")
+        check(re.search(rf"^at {at:g} s:.*adaptive-0\.2 relMSE [\d.e-]+ \(efficiency [\d.]+x reference's\)",
+                        out.stdout, re.M) is not None, "converge --at: no equal-time line naming both strategies")
+        equal = result.get("equal_time", [])
+        check(len(equal) == 1 and equal[0].get("seconds") == at, f"converge --at: equal_time {equal}")
+        for s in result.get("strategies", []):
+            points = s["points"]
+            check(points and points[-1]["seconds"] >= at, f"converge --at {s['name']}: stopped before {at} s")
+            value = equal[0]["relmse"].get(s["name"]) if equal else None
+            around = [(a, b) for a, b in zip(points, points[1:]) if a["seconds"] <= at <= b["seconds"]]
+            if check(value is not None and around, f"converge --at {s['name']}: no relMSE at {at} s ({value})"):
+                a, b = around[0]
+                low, high = sorted((a["relmse"], b["relmse"]))
+                check(low <= value <= high, f"converge --at {s['name']}: {value} not between {low} and {high}")
+
+    for args, says in ((["-r", "0", "30"], "-r: an image of 0x30 pixels is out of range"),
+                       (["-m", "2000"], "-m: at most 1024")):
+        out = run(["converge", scene_path, *args, "--out", tmp], 60)
+        check(out.returncode == 1 and says in out.stderr, f"converge {' '.join(args)}: exit {out.returncode}, "
+              f"stderr {out.stderr[-200:]!r}")
+
 # ---- render ------------------------------------------------------------------
 with tempfile.TemporaryDirectory(prefix="pathlab-bench-render-") as tmp:
     scene_path = os.path.join(SOURCE, "media", "scenes", "cornell-mirror-glass.json")
@@ -219,7 +251,8 @@ with tempfile.TemporaryDirectory(prefix="pathlab-bench-render-") as tmp:
 # ---- options out of range: one clear error, exit 1, nothing run -----------------
 for args in (["render", "--spp", "0"], ["render", "--threads", "-2"], ["bvh", "--triangles", "0"],
              ["converge", "x.json", "--budget", "-1"], ["converge", "x.json", "--budget", "nan"],
-             ["converge", "x.json", "--budget", "inf"], ["converge", "x.json", "--reference-spp", "0"]):
+             ["converge", "x.json", "--budget", "inf"], ["converge", "x.json", "--reference-spp", "0"],
+             ["converge", "x.json", "--at", "0"], ["converge", "x.json", "--max-depth", "-1"]):
     out = run(args, 60)
     option = next(a for a in args if a.startswith("--"))
     check(out.returncode == 1 and option in out.stderr and "must be" in out.stderr,

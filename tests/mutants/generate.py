@@ -303,6 +303,35 @@ MUTANTS = [
      [("  const Point3 focus = pinholeRay.origin + t * pinholeRay.direction;\n", ""),
       ("return Ray{origin, glm::normalize(focus - origin)};",
        "const Point3 focus = origin + t * pinholeRay.direction;\n  return Ray{origin, glm::normalize(focus - origin)};")]),
+    (11, "nominal-spp-divisor", "the colour sum divided by the maximum, not by the samples the pixel took",
+     [("if (stats.n > 0) pixel.estimate = Color(sum / double(stats.n));",
+       "if (stats.n > 0) pixel.estimate = Color(sum / double(settings.maxSpp));")]),
+    (11, "population-variance", "M2 / n: the population variance, biased low",
+     [("return stats.n > 1 ? stats.m2 / double(stats.n - 1) : 0.0;", "return stats.n > 1 ? stats.m2 / double(stats.n) : 0.0;")]),
+    (11, "checked-every-sample", "the rule checked after every sample, not after each batch",
+     [("      addSample(stats, double(luminance(c)));\n    }\n    pixel.confident = confidentEnough(stats, settings);",
+       "      addSample(stats, double(luminance(c)));\n      pixel.confident = confidentEnough(stats, settings);\n"
+       "      if (pixel.confident) break;\n    }")]),
+    (11, "no-maximum", "no maximum: a pixel that never meets the rule never stops",
+     [("while (stats.n < settings.maxSpp && !pixel.confident) {", "while (!pixel.confident) {"),
+      ("for (uint32_t k = 0; k < settings.batch && stats.n < settings.maxSpp; ++k) {", "for (uint32_t k = 0; k < settings.batch; ++k) {")]),
+    (11, "no-minimum", "the rule allowed before the minimum",
+     [("  if (stats.n < settings.minSpp) return false;\n", "")]),
+    (11, "sum-of-squares", "M2 kept as the sum of squares, the variance as (sum x^2 - n mean^2) / (n - 1): cancellation",
+     [("  const double delta = x - stats.mean;\n  stats.mean += delta / double(stats.n);\n  stats.m2 += delta * (x - stats.mean);",
+       "  stats.mean += (x - stats.mean) / double(stats.n);\n  stats.m2 += x * x;"),
+      ("return stats.n > 1 ? stats.m2 / double(stats.n - 1) : 0.0;",
+       "return stats.n > 1 ? (stats.m2 - double(stats.n) * stats.mean * stats.mean) / double(stats.n - 1) : 0.0;")]),
+    (11, "no-sqrt-n", "the interval 1.96 sigma, without the 1 / sqrt(n) of a mean",
+     [("const double halfWidth = 1.96 * std::sqrt(sampleVariance(stats) / double(stats.n));",
+       "const double halfWidth = 1.96 * std::sqrt(sampleVariance(stats));")]),
+    (11, "variance-for-sigma", "the variance used where the standard deviation belongs",
+     [("const double halfWidth = 1.96 * std::sqrt(sampleVariance(stats) / double(stats.n));",
+       "const double halfWidth = 1.96 * sampleVariance(stats) / std::sqrt(double(stats.n));")]),
+    (11, "red-channel", "the statistics of the red channel, not of the luminance",
+     [("addSample(stats, double(luminance(c)));", "addSample(stats, double(c.x));")]),
+    (11, "old-mean-twice", "Welford's M2 grown by delta^2, the old mean's deviation twice",
+     [("stats.m2 += delta * (x - stats.mean);", "stats.m2 += delta * delta;")]),
 ]
 ALTERNATES = [
     (1, "mirrored-jitter", "pixel + (1 - u): another uniform map onto the pixel",
@@ -453,6 +482,18 @@ ALTERNATES = [
        "  const Vec3 d = glm::transpose(worldFromCamera) * pinholeRay.direction;\n"
        "  const Vec3 focus = d * (camera.focalDistance / d.z), lens(disk.x, disk.y, 0.0f);\n"
        "  return Ray{camera.position + worldFromCamera * lens, glm::normalize(worldFromCamera * (focus - lens))};")]),
+    (11, "squared-rule", "the rule compared squared: (1.96)^2 s^2 / n <= (tolerance mean)^2 for a positive mean",
+     [("  const double halfWidth = 1.96 * std::sqrt(sampleVariance(stats) / double(stats.n));\n"
+       "  return halfWidth <= settings.tolerance * stats.mean;",
+       "  const double bound = settings.tolerance * stats.mean;\n"
+       "  return bound >= 0.0 && 1.96 * 1.96 * sampleVariance(stats) / double(stats.n) <= bound * bound;")]),
+    (11, "other-welford-form", "Welford's update in its other form: M2 += (n - 1) / n delta^2, then the mean",
+     [("  const double delta = x - stats.mean;\n  stats.mean += delta / double(stats.n);\n  stats.m2 += delta * (x - stats.mean);",
+       "  const double delta = x - stats.mean;\n  stats.m2 += double(stats.n - 1) / double(stats.n) * delta * delta;\n"
+       "  stats.mean += delta / double(stats.n);")]),
+    (11, "colour-by-welford", "the colour's mean kept by a running mean per channel instead of a sum",
+     [("      sum += glm::dvec3(c);", "      sum += (glm::dvec3(c) - sum) / double(stats.n + 1);"),
+      ("if (stats.n > 0) pixel.estimate = Color(sum / double(stats.n));", "if (stats.n > 0) pixel.estimate = Color(sum);")]),
 ]
 
 

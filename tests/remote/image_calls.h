@@ -13,12 +13,12 @@ PATHLAB_REMOTE_CALL(RenderMoments, 110, test::PixelMoments(Scene, test::ImageOpt
 namespace pathlab::wire {
 template <>
 struct Fields<test::ImageOptions> {
-  static auto tie(test::ImageOptions& s) { return std::tie(s.integrator, s.environmentSampling); }
+  static auto tie(test::ImageOptions& s) { return std::tie(s.integrator, s.environmentSampling, s.adaptive); }
 };
 template <>
 struct Fields<test::PixelMoments> {
   static auto tie(test::PixelMoments& s) {
-    return std::tie(s.width, s.height, s.spp, s.mean, s.varianceOfMean, s.nonFinite, s.usedBvh);
+    return std::tie(s.width, s.height, s.spp, s.mean, s.varianceOfMean, s.nonFinite, s.usedBvh, s.samples);
   }
 };
 }  // namespace pathlab::wire

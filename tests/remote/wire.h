@@ -23,6 +23,7 @@
 #include "core/hit.h"
 #include "core/lights.h"
 #include "core/scene.h"
+#include "tasks/adaptive_sampling.h"
 #include "tasks/bvh.h"
 #include "tasks/camera_rays.h"
 #include "tasks/direct_lighting.h"
@@ -200,6 +201,7 @@ PATHLAB_WIRE_FIELDS(Interval, s.min, s.max);
 PATHLAB_WIRE_FIELDS(Ray, s.origin, s.direction);
 PATHLAB_WIRE_FIELDS(Camera, s.position, s.lookAt, s.up, s.vfovDegrees, s.apertureRadius, s.focalDistance);
 PATHLAB_WIRE_FIELDS(CameraBasis, s.forward, s.right, s.up);
+PATHLAB_WIRE_FIELDS(AdaptiveSettings, s.tolerance, s.batch, s.minSpp, s.maxSpp);
 PATHLAB_WIRE_FIELDS(TriangleHit, s.t, s.b1, s.b2);
 PATHLAB_WIRE_FIELDS(SurfacePoint, s.point, s.geometricNormal, s.shadingNormal);
 PATHLAB_WIRE_FIELDS(Aabb, s.min, s.max);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "util/math.h"
+#include "util/random.h"
 
 namespace pathlab::test {
 
@@ -76,6 +77,15 @@ class Random {
  private:
   std::mt19937_64 engine_;
 };
+
+// n uniform points of [0,1)^2, one framework Sampler stream per point: the
+// inputs a warp's chi-square test maps.
+inline std::vector<Vec2> uniformPoints(int n, uint64_t seed) {
+  std::vector<Vec2> us;
+  us.reserve(size_t(n));
+  for (int i = 0; i < n; ++i) us.push_back(Sampler(uint32_t(i), 0, testSeed(seed)).next2D());
+  return us;
+}
 
 // The optional folder of data users bring (the course's .dae files, scanned
 // models): $PATHLAB_DATA_DIR, or "" when unset. Tests that read it skip with

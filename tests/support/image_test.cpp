@@ -47,9 +47,7 @@ double twoSidedQuantile(double p) {
   return 0.5 * (lo + hi);
 }
 
-std::string referencePath(const ImageCase& c, const char* suffix) {
-  return std::string(PATHLAB_TESTS_DIR) + "/" + c.suite + "/images/" + c.name + suffix;
-}
+std::string referencePath(const ImageCase& c, const char* suffix) { return referenceImagePath(c.suite, c.name, suffix); }
 
 // z()'s rounding floor from the reference's value alone, where noise is
 // measured: a huge mean of yours must not raise the floor its own noise is
@@ -243,7 +241,11 @@ std::string describe(const Comparison& c) {
 
 }  // namespace
 
-void checkImage(ImageCase c) {
+std::string referenceImagePath(const std::string& suite, const std::string& name, const char* suffix) {
+  return std::string(PATHLAB_TESTS_DIR) + "/" + suite + "/images/" + name + suffix;
+}
+
+PixelMoments checkImage(ImageCase c) {
   static const char* channels[] = {"red", "green", "blue"};
   const std::hash<std::string> hash;
   c.scene.indexPrimitives();
@@ -256,7 +258,9 @@ void checkImage(ImageCase c) {
     Scene scene = c.scene;
     scene.render.samplesPerPixel *= kReferenceSppFactor;
     scene.render.seed = 0x5eedf00dull + hash(c.name);
-    const PixelMoments reference = renderMoments(scene, c.options);
+    ImageOptions uniform = c.options;  // an adaptive test's reference: every pixel at 16 x its maximum
+    uniform.adaptive.reset();
+    const PixelMoments reference = renderMoments(scene, uniform);
     std::filesystem::create_directories(std::filesystem::path(meanPath).parent_path());
     const ImageMetadata metadata{{"pathlab:spp", std::to_string(scene.render.samplesPerPixel)}};
     writeImage(meanImage(reference), meanPath, metadata);
@@ -266,7 +270,7 @@ void checkImage(ImageCase c) {
   PixelMoments reference;
   try {
     const Image mean = readImage(meanPath), variance = readImage(variancePath);
-    reference = {mean.width, mean.height, 0, mean.pixels, variance.pixels, 0, true};
+    reference = {mean.width, mean.height, 0, mean.pixels, variance.pixels, 0, true, {}};
   } catch (const Error& e) {
     FAIL("the reference image is missing (tools/make-reference-images writes it): " << e.what());
   }
@@ -313,6 +317,7 @@ void checkImage(ImageCase c) {
       << writeFailureImages(c, yours, reference, v);
     FAIL_CHECK(s.str());
   }
+  return yours;
 }
 
 }  // namespace pathlab::test

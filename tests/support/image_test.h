@@ -34,7 +34,11 @@ struct ImageCase {
   ImageOptions options;
 };
 
-// CHECKs that the candidate's render of `c` matches the reference image.
-void checkImage(ImageCase c);
+// The reference image of suite SUITE named NAME, plus suffix (".exr": the reference's mean, ".variance.exr": its variance).
+std::string referenceImagePath(const std::string& suite, const std::string& name, const char* suffix);
+
+// CHECKs that the candidate's render of `c` matches the reference image;
+// returns that render (an adaptive one's sample counts: task 11's tests).
+PixelMoments checkImage(ImageCase c);
 
 }  // namespace pathlab::test

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "render/render.h"
@@ -20,6 +21,9 @@ namespace pathlab::test {
 struct ImageOptions {
   Integrator integrator = Integrator::Path;
   EnvironmentSampling environmentSampling = EnvironmentSampling::Importance;
+  // Task 11: each pixel by samplePixelAdaptively, at most scene.render's
+  // samples per pixel (the reference image: that many times 16, uniformly).
+  std::optional<AdaptiveSettings> adaptive{};
 };
 
 struct PixelMoments {
@@ -28,6 +32,7 @@ struct PixelMoments {
   std::vector<Color> varianceOfMean;  // the sample variance / the number of samples
   uint64_t nonFinite = 0;             // NaN or Inf samples (left out of the moments)
   bool usedBvh = false;               // false: task 3's tree was not usable, brute force ran instead
+  std::vector<uint32_t> samples{};    // adaptive: the samples each pixel took (counted here, not reported)
 };
 
 // scene.render gives the size, samples per pixel, seed, -m and -l.
@@ -49,6 +54,7 @@ inline PixelMoments renderMoments(const Scene& scene, const ImageOptions& imageO
   m.spp = scene.render.samplesPerPixel;
   m.mean.assign(size_t(m.width) * size_t(m.height), Color(0.0f));
   m.varianceOfMean.assign(m.mean.size(), Color(0.0f));
+  if (imageOptions.adaptive) m.samples.assign(m.mean.size(), 0);
   m.usedBvh = accelerator.usesBvh();
   // A tree the framework refused fails the test anyway: no slow brute-force render.
   if (!m.usedBvh && !scene.primitives.empty()) return m;
@@ -60,22 +66,34 @@ inline PixelMoments renderMoments(const Scene& scene, const ImageOptions& imageO
         context.pixel = {x, y};
         glm::dvec3 sum(0.0), sumSquares(0.0);
         int n = 0;
-        for (int i = 0; i < m.spp; ++i) {
-          const glm::dvec3 c(estimatePixelSample(context, options, basis, uint32_t(i)));
+        uint32_t calls = 0;
+        // One sample, tallied here: the variance of a pixel's mean is this
+        // code's, whatever an adaptive pixel says about itself.
+        const auto sample = [&](uint32_t i) {
+          ++calls;
+          const glm::dvec3 c(estimatePixelSample(context, options, basis, i));
           if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
             ++nonFinite;
-            continue;
+            return Color(0.0f);
           }
           sum += c;
           sumSquares += c * c;
           ++n;
+          return Color(c);
+        };
+        std::optional<AdaptivePixel> adaptive;
+        if (imageOptions.adaptive) {
+          adaptive = samplePixelAdaptively(sample, *imageOptions.adaptive);
+        } else {
+          for (int i = 0; i < m.spp; ++i) sample(uint32_t(i));
         }
         const size_t index = size_t(y) * size_t(m.width) + size_t(x);
+        if (adaptive) m.samples[index] = calls;
         if (n == 0) continue;
         const glm::dvec3 mean = sum / double(n);
         const glm::dvec3 variance =
             n > 1 ? glm::max(glm::dvec3(0.0), (sumSquares - sum * mean) / double(n - 1)) : glm::dvec3(0.0);
-        m.mean[index] = Color(mean);
+        m.mean[index] = adaptive ? adaptive->estimate : Color(mean);  // adaptive: the student's own estimate
         m.varianceOfMean[index] = Color(variance / double(n));
       }
     }
