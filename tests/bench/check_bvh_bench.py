@@ -26,6 +26,7 @@ its usage and writes nothing.
 usage: check_bvh_bench.py PATHLAB-BENCH [--skip-bvh]"""
 import csv
 import json
+import math
 import os
 import re
 import subprocess
@@ -216,6 +217,11 @@ with tempfile.TemporaryDirectory(prefix="pathlab-bench-equal-time-") as tmp:
                 a, b = around[0]
                 low, high = sorted((a["relmse"], b["relmse"]))
                 check(low <= value <= high, f"converge --at {s['name']}: {value} not between {low} and {high}")
+                # The bias beside it: each point's block shift, and at --at one between its two points'.
+                shift = equal[0].get("block_shift", {}).get(s["name"])
+                low, high = sorted((a.get("block_shift", math.nan), b.get("block_shift", math.nan)))
+                check(shift is not None and low <= shift <= high,
+                      f"converge --at {s['name']}: block shift {shift} not between {low} and {high}")
 
     for args, says in ((["-r", "0", "30"], "-r: an image of 0x30 pixels is out of range"),
                        (["-m", "2000"], "-m: at most 1024")):
