@@ -2,9 +2,10 @@
 # The portability jobs CI runs after the hardening jobs (docs/setup.md,
 # "What is proved where"):
 #   clang-libcxx   Clang with libc++, the macOS toolchain: configure, build
-#                  and test with the clang-libcxx preset (every test but the grader's).
+#                  and test with the clang-libcxx preset (every test but the
+#                  grader's and the write-up's).
 #   aarch64        AArch64, Apple Silicon's instruction set: tools/aarch64-check
-#                  --quick (cross-built, the suites and framework tests under
+#                  --quick (cross-built, 4 suites drawn per commit and the framework tests under
 #                  qemu-user, --accel fast images equal to --accel task3).
 # The Windows check (tools/windows-check) is not part of CI: see docs/setup.md.
 #   tools/portability.sh [clang-libcxx] [aarch64]     (no job named: both)

@@ -138,7 +138,9 @@ TEST_CASE("T11.1 Welford: the mean and the sample variance of any sequence, as a
     double squares = 0.0;
     for (double x : values) squares += (x - mean) * (x - mean);
     const double variance = squares / double(values.size() - 1);
-    const auto& [stats, yourVariance] = results[k];
+    // (Not a structured binding: Clang 14 cannot capture one in INFO's lambda.)
+    const RunningStatistics& stats = std::get<0>(results[k]);
+    const double yourVariance = std::get<1>(results[k]);
     INFO("sequence " << k << ": " << values.size() << " values around " << values[0] << ": two-pass mean " << mean
                      << ", sample variance " << variance << "; yours: n " << stats.n << ", mean " << stats.mean
                      << ", sampleVariance " << yourVariance);
