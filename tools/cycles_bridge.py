@@ -19,6 +19,12 @@ orchestrator checks the scene first):
 - spheres -> one point of a point cloud each: Cycles intersects points as
   true spheres (no tessellation).
 - quads and inline triangle meshes -> meshes, flat shaded.
+- a medium (task 12: extinction sigma_t = density, albedo, g) -> Volume
+  Scatter (colour albedo, density sigma_t, anisotropy g: sigma_s = albedo
+  sigma_t) plus Volume Absorption (colour albedo, density sigma_t:
+  sigma_a = (1 - albedo) sigma_t), homogeneous; an interface -> a material
+  with that volume and no surface (Cycles' index-matched boundary); the
+  scene's medium -> the world's volume.
 - the environment image -> the world, looked up with PathLab's own
   u = atan2(z, x) / 2 pi, v = theta / pi (math nodes, not Blender's
   equirectangular convention), nearest texel: PathLab's lighting integrates
@@ -38,13 +44,34 @@ def to_blender(p):
     return (x, -z, y)
 
 
-def scene_material(name, spec):
+def add_volume(nodes, links, medium, socket):
+    """sigma_s = albedo sigma_t (Volume Scatter: colour x density), sigma_a =
+    (1 - albedo) sigma_t (Volume Absorption: (1 - colour) x density)."""
+    albedo = (*medium.get("albedo", [1.0, 1.0, 1.0]), 1.0)
+    scatter = nodes.new("ShaderNodeVolumeScatter")
+    scatter.inputs["Color"].default_value = albedo
+    scatter.inputs["Density"].default_value = medium["density"]
+    scatter.inputs["Anisotropy"].default_value = medium.get("g", 0.0)
+    absorb = nodes.new("ShaderNodeVolumeAbsorption")
+    absorb.inputs["Color"].default_value = albedo
+    absorb.inputs["Density"].default_value = medium["density"]
+    both = nodes.new("ShaderNodeAddShader")
+    links.new(scatter.outputs["Volume"], both.inputs[0])
+    links.new(absorb.outputs["Volume"], both.inputs[1])
+    links.new(both.outputs["Shader"], socket)
+
+
+def scene_material(name, spec, media):
     material = bpy.data.materials.new(name)
     material.use_nodes = True
+    material.cycles.homogeneous_volume = True
     nodes, links = material.node_tree.nodes, material.node_tree.links
     nodes.clear()
     output = nodes.new("ShaderNodeOutputMaterial")
     kind = spec.get("type", "diffuse")
+    if kind == "interface":  # a volume and no surface: rays cross it unchanged
+        add_volume(nodes, links, media[spec["interior"]], output.inputs["Volume"])
+        return material
     if kind == "diffuse":
         bsdf = nodes.new("ShaderNodeBsdfDiffuse")
         bsdf.inputs["Color"].default_value = (*spec.get("albedo", [0.8, 0.8, 0.8]), 1.0)
@@ -92,13 +119,15 @@ def add_sphere(index, center, radius, material):
     modifier.node_group = tree
 
 
-def add_world(environment):
+def add_world(environment, medium=None):
     world = bpy.data.worlds.new("environment")
     bpy.context.scene.world = world
     world.use_nodes = True
     nodes, links = world.node_tree.nodes, world.node_tree.links
     nodes.clear()
     output = nodes.new("ShaderNodeOutputWorld")
+    if medium is not None:
+        add_volume(nodes, links, medium, output.inputs["Volume"])
     background = nodes.new("ShaderNodeBackground")
     background.inputs["Strength"].default_value = environment.get("scale", 1.0)
     links.new(background.outputs["Background"], output.inputs["Surface"])
@@ -187,9 +216,10 @@ def render(scene_path, out_path, spp, seed, max_bounces):
     scene.render.image_settings.color_depth = "32"
     scene.render.image_settings.exr_codec = "ZIP"
     add_camera(spec.get("camera", {}))
-    materials = {name: scene_material(name, m) for name, m in spec.get("materials", {}).items()}
+    media = spec.get("media", {})
+    materials = {name: scene_material(name, m, media) for name, m in spec.get("materials", {}).items()}
     if "default" not in materials:
-        materials["default"] = scene_material("default", {"albedo": [0.5, 0.5, 0.5]})
+        materials["default"] = scene_material("default", {"albedo": [0.5, 0.5, 0.5]}, media)
     for i, sphere in enumerate(spec.get("spheres", [])):
         add_sphere(i, sphere.get("center", [0, 0, 0]), sphere.get("radius", 1.0),
                    materials[sphere.get("material", "default")])
@@ -201,7 +231,7 @@ def render(scene_path, out_path, spp, seed, max_bounces):
             add_mesh(f"mesh {i}", [c, c + eu, c + eu + ev, c + ev], [(0, 1, 2), (0, 2, 3)], material)
         else:
             add_mesh(f"mesh {i}", mesh["positions"], mesh["triangles"], material)
-    add_world(spec.get("environment", {"color": [0, 0, 0]}))
+    add_world(spec.get("environment", {"color": [0, 0, 0]}), media.get(spec["medium"]) if "medium" in spec else None)
     scene.render.filepath = out_path
     bpy.ops.render.render(write_still=True)
     # And a PNG to look at (sRGB, the Standard view: as PathLab writes PNGs).

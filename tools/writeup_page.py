@@ -60,6 +60,8 @@ table.overview { width: 100%; }
   body { max-width: none; padding: 0; font-size: 11pt; }
   section.task + section.task, section.convergence { break-before: page; }  /* task 1 starts on page 1 */
   figure, .notice, tr, .z-legend { break-inside: avoid; }
+  table.overview { font-size: 9pt; }  /* a row per task, and task 1's start still on page 1 */
+  table.overview th, table.overview td { padding: 1px 4px; }
   .compare-slider, .compare-label { display: none; }
   .compare-frame { position: static; display: flex; gap: 8px; border: none; }
   .compare-frame img { border: 1px solid var(--line); }

@@ -26,9 +26,9 @@ static_assert(std::size(kIntegrators) == std::size(kIntegratorNames));
 constexpr const char* kTaskTitles[] = {"", "Camera rays", "Intersection", "BVH", "Direct lighting",
                                        "Path tracing", "Mirror & glass", "Environment", "Rough materials",
                                        "Multiple importance sampling", "Thin lens",
-                                       "Adaptive sampling"};
+                                       "Adaptive sampling", "Participating media"};
 constexpr const char* kTabNames[] = {"", "1 Camera", "2 Hits", "3 BVH", "4 Direct", "5 Paths", "6 Mirror/glass",
-                                     "7 Environment", "8 Rough", "9 MIS", "10 Lens", "11 Adaptive"};
+                                     "7 Environment", "8 Rough", "9 MIS", "10 Lens", "11 Adaptive", "12 Media"};
 static_assert(std::size(kTaskTitles) == kTaskCount + 1 && std::size(kTabNames) == kTaskCount + 1,
               "a title and a tab name for every task folder (core/task_list.h)");
 constexpr int kInspectedSamples = 16;

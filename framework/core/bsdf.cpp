@@ -46,6 +46,11 @@ float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
 }
 
 std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, Vec2 u) const {
+  if (material_.type == MaterialType::Interface) {  // no surface: straight on, all of it (f cos / pdf = 1)
+    const float cosine = std::abs(glm::dot(wo, frame_.n));
+    if (!(cosine > 0.0f)) return std::nullopt;
+    return BsdfSample{-wo, Color(1.0f / cosine), 1.0f, true};
+  }
   if (isDelta()) {
     // Glass lives in the frame of its outward normal, not the side wo is on.
     const Frame& frame = material_.type == MaterialType::Glass ? outwardFrame_ : frame_;

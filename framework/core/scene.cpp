@@ -22,6 +22,12 @@ uint32_t Scene::materialOf(uint32_t primitive) const {
   return ref.isSphere() ? spheres[ref.index].material : meshes[ref.mesh].material;
 }
 
+MediumIndex Scene::mediumAcross(const Hit& hit, const Vec3& direction, MediumIndex current) const {
+  const Material& material = materials[hit.material];
+  if (material.type != MaterialType::Interface && material.interior == kVacuum) return current;
+  return glm::dot(direction, hit.geometricNormal) < 0.0f ? material.interior : medium;
+}
+
 size_t Scene::triangleCount() const {
   size_t n = 0;
   for (const TriangleMesh& mesh : meshes) n += mesh.triangles.size();

@@ -10,13 +10,16 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "core/hit.h"
 #include "core/microfacet_material.h"
 #include "util/image.h"
 #include "util/math.h"
 
 namespace pathlab {
 
-enum class MaterialType { Diffuse, Mirror, Glass, RoughConductor, RoughPlastic };
+// Interface: no surface at all, only where a medium begins (task 12): light
+// passes straight through, and the medium changes.
+enum class MaterialType { Diffuse, Mirror, Glass, RoughConductor, RoughPlastic, Interface };
 
 // The name a scene file gives each type ("diffuse", ..., "conductor", "plastic").
 inline const char* materialTypeName(MaterialType type) {
@@ -26,9 +29,30 @@ inline const char* materialTypeName(MaterialType type) {
     case MaterialType::Glass: return "glass";
     case MaterialType::RoughConductor: return "conductor";
     case MaterialType::RoughPlastic: return "plastic";
+    case MaterialType::Interface: return "interface";
   }
   return "?";
 }
+
+// Task 12: a homogeneous participating medium. Light travelling a length
+// dt in it is scattered with probability sigmaS dt and absorbed with
+// sigmaA dt; extinction sigmaT = sigmaA + sigmaS is the same for every
+// colour (so one free-flight distance serves all three), the albedo
+// sigmaS / sigmaT is a colour. Scattered light leaves by the Henyey-Greenstein
+// phase function of asymmetry g.
+struct Medium {
+  std::string name;
+  float sigmaT = 1.0f;  // extinction per unit length
+  Color albedo{1.0f};   // sigmaS / sigmaT, in [0, 1] per colour
+  float g = 0.0f;       // in (-1, 1): > 0 mostly onwards, < 0 mostly back
+
+  Color sigmaS() const { return albedo * sigmaT; }
+  Color sigmaA() const { return (Color(1.0f) - albedo) * sigmaT; }
+};
+
+// An index into Scene::media, or kVacuum.
+using MediumIndex = int32_t;
+inline constexpr MediumIndex kVacuum = -1;
 
 struct Material {
   std::string name;
@@ -42,10 +66,15 @@ struct Material {
   float roughness = 0.5f;      // perceptual roughness in [0, 1]: alpha = roughness^2
   bool exactFresnel = false;   // conductor: Fresnel from eta and k instead of Schlick from albedo
   Color eta{0.0f}, k{0.0f};    // conductor: the complex index of refraction eta + i k, per channel
+  // Glass and interface (task 12): the medium inside the closed surface they
+  // bound (its geometric normals point out); outside is the scene's medium.
+  MediumIndex interior = kVacuum;
 
   bool isEmissive() const { return maxComponent(emission) > 0.0f; }
-  // Mirror and glass: one direction per sample (task 6).
-  bool isDelta() const { return type == MaterialType::Mirror || type == MaterialType::Glass; }
+  // Mirror and glass: one direction per sample (task 6); an interface: straight on.
+  bool isDelta() const {
+    return type == MaterialType::Mirror || type == MaterialType::Glass || type == MaterialType::Interface;
+  }
   // Rough conductor and rough plastic: GGX lobes (task 8).
   bool isRough() const { return type == MaterialType::RoughConductor || type == MaterialType::RoughPlastic; }
   // The parameters task 8's functions take, for a rough conductor or plastic.
@@ -108,6 +137,18 @@ struct Scene {
   std::vector<PointLight> pointLights;
   std::optional<Environment> environment;
   std::vector<PrimitiveRef> primitives;  // all triangles, then all spheres
+  // Task 12: the media, and the one that fills the scene around every
+  // object (a fog; the camera is in it). Media do not nest: leaving an
+  // object's interior is entering the scene's medium.
+  std::vector<Medium> media;
+  MediumIndex medium = kVacuum;
+
+  bool hasMedia() const { return !media.empty(); }
+  // The medium a ray is in after it crosses the surface at `hit` along
+  // `direction` (unit): the surface's interior going in (against its
+  // geometric normal), the scene's medium going out; `current` where the
+  // surface bounds no medium.
+  MediumIndex mediumAcross(const Hit& hit, const Vec3& direction, MediumIndex current) const;
 
   // Rebuilds `primitives` from meshes and spheres; loaders call it once.
   void indexPrimitives();

@@ -25,7 +25,7 @@ struct TracedRay {
   Interval range;
   bool shadow = false;  // an occlusion query
   bool hit = false;     // blocked (shadow) or hit something
-  Hit record;           // the closest hit (not for shadow rays); record.t is kInfinity on a miss
+  Hit record;           // the closest hit (not for occlusion queries); record.t is kInfinity on a miss
 };
 
 // Closest-hit and any-hit queries against a whole scene (Accelerator).
@@ -69,6 +69,15 @@ struct TraceContext {
     const bool blocked = queries.anyHit(ray, range);
     if (log) [[unlikely]] log->push_back({ray, range, true, blocked, Hit{}});
     return blocked;
+  }
+  // The closest hit of a shadow ray: through media (task 12) light passes
+  // the interfaces, so a shadow ray needs to know what it met. Counted and
+  // recorded as a shadow ray.
+  std::optional<Hit> shadowHit(const Ray& ray, Interval range) {
+    ++rays;
+    std::optional<Hit> hit = queries.closestHit(ray, range);
+    if (log) [[unlikely]] log->push_back({ray, range, true, hit.has_value(), hit.value_or(Hit{})});
+    return hit;
   }
   // Radiance arriving along a ray that leaves the scene.
   Color background(const Vec3& direction) const;

@@ -42,6 +42,7 @@ std::vector<DebugView> allDebugViews() {
   addMisViews(views);
   addThinLensViews(views);
   addAdaptiveSamplingViews(views);
+  addMediaViews(views);
   return views;
 }
 

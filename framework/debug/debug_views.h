@@ -83,5 +83,6 @@ void addMicrofacetViews(std::vector<DebugView>& views);     // tasks/08-microfac
 void addMisViews(std::vector<DebugView>& views);            // tasks/09-mis/debugger.cpp
 void addThinLensViews(std::vector<DebugView>& views);     // tasks/10-thin-lens/debugger.cpp
 void addAdaptiveSamplingViews(std::vector<DebugView>& views);  // tasks/11-adaptive-sampling/debugger.cpp
+void addMediaViews(std::vector<DebugView>& views);  // tasks/12-media/debugger.cpp
 
 }  // namespace pathlab

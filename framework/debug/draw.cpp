@@ -202,6 +202,11 @@ void CameraProjection::drawSegment(Image& image, Point3 a, Point3 b, Color color
   drawLine(image, toRaster(ca), toRaster(cb), color);
 }
 
+void CameraProjection::drawDot(Image& image, Point3 p, float radius, Color color) const {
+  const Vec3 c = toCamera(p);
+  if (c.z > 1e-4f) pathlab::drawDot(image, toRaster(c), radius, color);
+}
+
 void CameraProjection::drawBox(Image& image, const Aabb& box, Color color) const {
   auto corner = [&](int i) {
     return Point3((i & 1) ? box.max.x : box.min.x, (i & 2) ? box.max.y : box.min.y, (i & 4) ? box.max.z : box.min.z);

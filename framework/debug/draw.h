@@ -33,6 +33,7 @@ class CameraProjection {
   CameraProjection(const Camera& camera, IVec2 resolution);
   void drawSegment(Image& image, Point3 a, Point3 b, Color color) const;
   void drawBox(Image& image, const Aabb& box, Color color) const;
+  void drawDot(Image& image, Point3 p, float radius, Color color) const;  // nothing behind the camera
 
  private:
   Vec3 toCamera(const Point3& p) const;

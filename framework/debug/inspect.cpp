@@ -27,24 +27,64 @@ std::string describeHit(const Scene& scene, const TracedRay& traced) {
   return line;
 }
 
+std::string mediumName(const Scene& scene, MediumIndex medium) {
+  return medium == kVacuum ? std::string("vacuum") : "medium \"" + scene.media[size_t(medium)].name + "\"";
+}
+
+bool startsAt(const Ray& ray, const Point3& point) {
+  return glm::length(ray.origin - point) <= 1e-3f * (1.0f + glm::length(point));
+}
+
 // Describes the rays of one sample. A bounce ray's direction was chosen by
-// the BSDF at the previous hit: its pdf and f are evaluated there.
+// the BSDF at the previous hit: its pdf and f are evaluated there. In a
+// scene with media (task 12) a ray may also start in mid-air on the ray
+// before it (a scattering event: its direction from the phase function), or
+// go straight on through an interface (no bounce: the medium changes); a
+// shadow ray passes interfaces in pieces.
 std::vector<std::string> describeRays(const Scene& scene, const std::vector<TracedRay>& rays) {
   std::vector<std::string> lines;
+  const bool hasMedia = !scene.media.empty();
   const TracedRay* lastHit = nullptr;  // the vertex the next bounce leaves from
+  const TracedRay* lastRay = nullptr;  // the last path ray, hit or not
+  MediumIndex medium = scene.medium;
   int bounce = 0;
   for (size_t i = 0; i < rays.size(); ++i) {
     const TracedRay& traced = rays[i];
     if (traced.shadow) {
       const float distance = traced.range.max;
-      lines.push_back("  light sample: direction " + vec(traced.ray.direction) +
+      // A shadow ray's closest hit is recorded where media need it (record.t finite).
+      const bool throughInterface = hasMedia && traced.hit && std::isfinite(traced.record.t) &&
+                                    scene.materials[traced.record.material].type == MaterialType::Interface;
+      // Where media are: a piece past an interface, or a sample from a scattering point.
+      std::string from = "light sample";
+      const TracedRay* previous = i > 0 ? &rays[i - 1] : nullptr;
+      if (hasMedia && previous && previous->shadow && std::isfinite(previous->record.t) &&
+          startsAt(traced.ray, previous->record.point)) {
+        from = "  on past it";
+      } else if (hasMedia && lastRay && !(lastRay->hit && startsAt(traced.ray, lastRay->record.point))) {
+        from = format("light sample from a scattering point at t=%.4g on the ray above",
+                      double(glm::dot(traced.ray.origin - lastRay->ray.origin, lastRay->ray.direction)));
+      }
+      lines.push_back("  " + from + ": direction " + vec(traced.ray.direction) +
                       (std::isfinite(distance) ? format(", distance %.4g", double(distance)) : std::string(", to infinity")) +
-                      (traced.hit ? ": BLOCKED" : ": reached the light"));
+                      (throughInterface ? format(": through an interface at t=%.4g, on", double(traced.record.t))
+                                        : traced.hit ? std::string(": BLOCKED") : std::string(": reached the light")));
       continue;
     }
     std::string line;
     if (i == 0) {
       line = "camera ray: o=" + vec(traced.ray.origin) + " d=" + vec(traced.ray.direction) + ", ";
+    } else if (hasMedia && lastRay && !(lastHit && startsAt(traced.ray, lastHit->record.point))) {
+      // Scattered in the medium, on the previous path ray.
+      ++bounce;
+      const float t = glm::dot(traced.ray.origin - lastRay->ray.origin, lastRay->ray.direction);
+      const float g = medium == kVacuum ? 0.0f : scene.media[size_t(medium)].g;
+      line = format("bounce %d: scattered in ", bounce) + mediumName(scene, medium) +
+             format(" at t=%.4g, phase sample wi=", double(t)) + vec(traced.ray.direction) +
+             format(" cos=%.3f (g=%.2f), ", double(glm::dot(lastRay->ray.direction, traced.ray.direction)), double(g));
+    } else if (hasMedia && lastHit && scene.materials[lastHit->record.material].type == MaterialType::Interface) {
+      medium = scene.mediumAcross(lastHit->record, traced.ray.direction, medium);
+      line = "  through the interface into " + mediumName(scene, medium) + ": ";
     } else {
       ++bounce;
       line = format("bounce %d: BSDF sample wi=", bounce) + vec(traced.ray.direction);
@@ -59,10 +99,16 @@ std::vector<std::string> describeRays(const Scene& scene, const std::vector<Trac
           line += format(" cos=%.3f pdf=%.4g f=", double(std::abs(glm::dot(from.shadingNormal, traced.ray.direction))),
                          double(bsdf.pdf(wo, traced.ray.direction))) + vec(f);
         }
+        if (hasMedia) {
+          const MediumIndex after = scene.mediumAcross(from, traced.ray.direction, medium);
+          if (after != medium) line += ", into " + mediumName(scene, after);
+          medium = after;
+        }
       }
       line += ", ";
     }
     lines.push_back(line + describeHit(scene, traced));
+    lastRay = &traced;
     if (traced.hit) lastHit = &traced;
   }
   return lines;

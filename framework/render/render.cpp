@@ -7,6 +7,7 @@
 
 #include "render/task_wiring.h"
 #include "tasks/direct_lighting.h"
+#include "tasks/media.h"
 #include "tasks/mis.h"
 #include "tasks/path_tracing.h"
 #include "tasks/thin_lens.h"
@@ -65,6 +66,7 @@ std::string tasksLightingRender(const Scene& scene, Integrator integrator) {
   if (lit && has([](const Material& m) { return m.isRough(); })) tasks.push_back(8);
   if (mis) tasks.push_back(9);
   if (scene.camera.apertureRadius > 0.0f) tasks.push_back(10);
+  if (paths && scene.hasMedia()) tasks.push_back(12);
   // Runs of consecutive tasks as "a-b".
   std::string text;
   for (size_t i = 0; i < tasks.size();) {
@@ -94,6 +96,7 @@ Color estimateRadiance(TraceContext& context, const RenderOptions& options, cons
   const Scene& scene = context.scene;
   switch (options.integrator) {
     case Integrator::Path:
+      if (scene.hasMedia()) return tracePathInMedia(context, ray, sampler);  // task 12; checkMedia allows only the recipe
       return options.strategy.isRecipe() ? tracePath(context, ray, sampler)
                                          : traceWithStrategy(context, ray, sampler, options.strategy);
     case Integrator::Direct: {
@@ -167,9 +170,26 @@ void RenderCounters::report(RenderStats& stats, int width) const {
   }
 }
 
+namespace {
+
+// Media (task 12) need task 12's path tracer: the other estimators know
+// nothing of them. The shading previews ignore them, and may look.
+const RenderOptions& checkMedia(const Scene& scene, const RenderOptions& options) {
+  const bool preview = options.integrator == Integrator::Preview || options.integrator == Integrator::Normals;
+  if (scene.hasMedia() && !options.estimator && !preview &&
+      (options.integrator != Integrator::Path || !options.strategy.isRecipe())) {
+    throw Error(scene.source + ": a scene with media renders with task 12's path tracer only (--integrator path, "
+                "the default strategy), not --integrator " + integratorName(options.integrator) +
+                (options.strategy.isRecipe() ? "" : " with another sampling strategy"));
+  }
+  return options;
+}
+
+}  // namespace
+
 ProgressiveRender::ProgressiveRender(const Scene& scene, const RenderOptions& options)
     : scene_(scene),
-      options_(options),
+      options_(checkMedia(scene, options)),
       basis_(cameraBasis(scene.camera)),
       accelerator_(scene, options.traversal),
       lights_(Lights::fromScene(scene, kLinkedTasks.environment, options.environmentSampling)),
@@ -256,6 +276,7 @@ RenderResult renderAdaptive(const Scene& scene, const RenderOptions& options) {
   if (const std::string problem = adaptiveSettingsProblem(settings); !problem.empty()) {
     throw Error("adaptive sampling: " + problem);
   }
+  checkMedia(scene, options);
   Scene run = scene;  // the Sobol sequence's length: the most a pixel may take
   run.render.samplesPerPixel = int(settings.maxSpp);
   const int width = run.render.width, height = run.render.height;

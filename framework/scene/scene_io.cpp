@@ -86,11 +86,65 @@ float roughnessOf(const Object& o) {
   return r;
 }
 
-Material parseMaterial(const Source& source, const Json& j, const std::string& path, const std::string& name) {
+// ---- media (task 12) -----------------------------------------------------------
+
+// A homogeneous medium: density (sigma_t) and albedo, or sigma_a and sigma_s
+// whose sum is the same in every colour; g for its phase function.
+Medium parseMedium(const Source& source, const Json& j, const std::string& path, const std::string& name) {
+  Object o(source, j, path, {"density", "albedo", "sigma_a", "sigma_s", "g"});
+  Medium m;
+  m.name = name;
+  const bool coefficients = o.has("sigma_a") || o.has("sigma_s");
+  if (coefficients == o.has("density")) {
+    o.fail(path, "give either density (and albedo) or sigma_a and sigma_s");
+  }
+  if (coefficients) {
+    if (o.has("albedo")) o.fail(o.field("albedo"), "give either density and albedo or sigma_a and sigma_s, not both");
+    const Color sigmaA = o.color("sigma_a", Color(0.0f)), sigmaS = o.color("sigma_s", Color(0.0f));
+    const Color sigmaT = sigmaA + sigmaS;
+    m.sigmaT = maxComponent(sigmaT);
+    if (!(m.sigmaT > 0.0f)) o.fail(path, "sigma_a + sigma_s is 0: a medium that does nothing");
+    if (!(sigmaT.x >= 0.9999f * m.sigmaT && sigmaT.y >= 0.9999f * m.sigmaT && sigmaT.z >= 0.9999f * m.sigmaT)) {
+      o.fail(path, "sigma_a + sigma_s must be the same in every colour (one extinction for all: task 12), got [" +
+                       std::to_string(sigmaT.x) + ", " + std::to_string(sigmaT.y) + ", " + std::to_string(sigmaT.z) +
+                       "]; give density and a coloured albedo instead");
+    }
+    m.albedo = glm::clamp(sigmaS / m.sigmaT, 0.0f, 1.0f);
+  } else {
+    m.sigmaT = o.positive("density", 1.0f);
+    m.albedo = o.color("albedo", m.albedo, 1.0f);
+  }
+  if (!(m.sigmaT <= kMaxSceneCoordinate)) o.fail(path, "an extinction above 1e12 per unit length");
+  m.g = o.number("g", 0.0f);
+  if (!(m.g > -1.0f && m.g < 1.0f)) o.fail(o.field("g"), "expected a number in (-1, 1), got " + o.at("g").dump());
+  return m;
+}
+
+using MediumNames = std::map<std::string, MediumIndex>;
+
+MediumIndex mediumNamed(const Object& o, const std::string& key, const MediumNames& media) {
+  const std::string name = o.string(key, "");
+  const auto it = media.find(name);
+  if (it != media.end()) return it->second;
+  std::string known;
+  for (const auto& entry : media) known += (known.empty() ? "" : ", ") + inQuotes(entry.first);
+  o.fail(o.field(key), "unknown medium " + inQuotes(name) +
+                           (known.empty() ? " (the scene defines no media)" : " (defined: " + known + ")"));
+}
+
+Material parseMaterial(const Source& source, const Json& j, const std::string& path, const std::string& name,
+                       const MediumNames& media) {
   std::string type = j.is_object() && j.contains("type") && j["type"].is_string() ? j["type"].get<std::string>()
                                                                                  : "diffuse";
   Material m;
   m.name = name;
+  if (type == "interface") {
+    Object o(source, j, path, {"type", "interior"});
+    m.type = MaterialType::Interface;
+    if (!o.has("interior")) o.fail(path, "an interface bounds a medium: give its interior");
+    m.interior = mediumNamed(o, "interior", media);
+    return m;
+  }
   if (type == "diffuse") {
     Object o(source, j, path, {"type", "albedo", "emission"});
     m.type = MaterialType::Diffuse;
@@ -102,12 +156,13 @@ Material parseMaterial(const Source& source, const Json& j, const std::string& p
     m.albedo = o.color("reflectance", Color(1.0f), 1.0f);
     m.emission = o.color("emission", m.emission);
   } else if (type == "glass") {
-    Object o(source, j, path, {"type", "reflectance", "transmittance", "ior", "emission"});
+    Object o(source, j, path, {"type", "reflectance", "transmittance", "ior", "emission", "interior"});
     m.type = MaterialType::Glass;
     m.albedo = o.color("reflectance", Color(1.0f), 1.0f);
     m.transmittance = o.color("transmittance", m.transmittance, 1.0f);
     m.ior = o.positive("ior", m.ior);
     m.emission = o.color("emission", m.emission);
+    if (o.has("interior")) m.interior = mediumNamed(o, "interior", media);
   } else if (type == "conductor") {
     Object o(source, j, path, {"type", "roughness", "f0", "eta", "k", "emission"});
     m.type = MaterialType::RoughConductor;
@@ -132,7 +187,7 @@ Material parseMaterial(const Source& source, const Json& j, const std::string& p
   } else {
     Object o(source, j, path, {"type"});  // reports a non-object or a non-string type first
     o.fail(o.field("type"), "unknown material type " + inQuotes(j["type"].get<std::string>()) +
-                                " (expected \"diffuse\", \"mirror\", \"glass\", \"conductor\" or \"plastic\")");
+                                " (expected \"diffuse\", \"mirror\", \"glass\", \"conductor\", \"plastic\" or \"interface\")");
   }
   return m;
 }
@@ -295,7 +350,8 @@ bool hasArea(const TriangleMesh& mesh) {
 
 Scene parseScene(const Source& source, const Json& root) {
   Object top(source, root, "",
-             {"description", "camera", "render", "materials", "spheres", "meshes", "lights", "environment"});
+             {"description", "camera", "render", "media", "medium", "materials", "spheres", "meshes", "lights",
+              "environment"});
   Scene scene;
   scene.source = source.name;
   if (top.has("camera")) scene.camera = parseCamera(Object(source, top.at("camera"), "camera",
@@ -306,13 +362,24 @@ Scene parseScene(const Source& source, const Json& root) {
                                       {"width", "height", "spp", "light_samples", "max_depth", "seed"}));
   }
 
+  MediumNames mediumIndex;
+  if (top.has("media")) {
+    const Json& media = top.at("media");
+    if (!media.is_object()) top.fail("media", "expected an object of name: medium, got " + describe(media));
+    for (const auto& [name, value] : media.items()) {
+      mediumIndex[name] = MediumIndex(scene.media.size());
+      scene.media.push_back(parseMedium(source, value, "media." + name, name));
+    }
+  }
+  if (top.has("medium")) scene.medium = mediumNamed(top, "medium", mediumIndex);
+
   std::map<std::string, uint32_t> materialIndex;
   if (top.has("materials")) {
     const Json& materials = top.at("materials");
     if (!materials.is_object()) top.fail("materials", "expected an object of name: material, got " + describe(materials));
     for (const auto& [name, value] : materials.items()) {
       materialIndex[name] = uint32_t(scene.materials.size());
-      scene.materials.push_back(parseMaterial(source, value, "materials." + name, name));
+      scene.materials.push_back(parseMaterial(source, value, "materials." + name, name, mediumIndex));
     }
   }
   auto materialFor = [&](const Object& o) -> uint32_t {

@@ -668,7 +668,7 @@ TEST_CASE("T3.4 traversal: a leaf's primitives are tested only when the ray ente
                   << " it never enters");
         }
       }
-    INFO((anyHit ? "any hit" : "closest hit") << ": primitives tested in leaves the ray never enters: " << wasted);
+    INFO(std::string(anyHit ? "any hit" : "closest hit") << ": primitives tested in leaves the ray never enters: " << wasted);
     CHECK(wasted == 0);
   }
 }

@@ -116,8 +116,9 @@ def main():
                 re.sub(rf"^(stage +{first[0]} +){first[1]}\b", rf"\g<1>{first[1] + CEILING}", ci_run, count=1, flags=re.M),
                 re.sub(r"^\| total \| (\d+) s", lambda m: f"| total | {int(m[1]) + CEILING} s", doc.replace(
                     f"| `{first[0]}` | {first[1]} s |", f"| `{first[0]}` | {first[1] + CEILING} s |", 1), flags=re.M)),
-            "the per-task allowance over the ceiling": (ci_run, re.sub(
-                r"(\| `bash tools/quickstart.sh test` \| )\d+", r"\g<1>9999", doc)),
+            # (Only while extension tasks are still to come: with all five in, the allowance counts for nothing.)
+            **({"the per-task allowance over the ceiling": (ci_run, re.sub(
+                r"(\| `bash tools/quickstart.sh test` \| )\d+", r"\g<1>9999", doc))} if NEW_TASKS > 0 else {}),
             "no failure over 1.5 times the share": (ci_run.replace("2 * took > 3 * share", "2 * took > 30 * share"), doc),
         }
         # The stage timer is run again only where it was altered (its runs sleep).

@@ -216,7 +216,8 @@ PATHLAB_WIRE_FIELDS(BsdfSample, s.wi, s.f, s.pdf, s.isDelta);
 PATHLAB_WIRE_FIELDS(EnvironmentDistribution, s.width, s.height, s.marginalCdf, s.conditionalCdf, s.totalWeight);
 PATHLAB_WIRE_FIELDS(EnvironmentSample, s.direction, s.pdfSolidAngle);
 PATHLAB_WIRE_FIELDS(Material, s.name, s.type, s.albedo, s.transmittance, s.ior, s.emission, s.roughness, s.exactFresnel,
-                    s.eta, s.k);
+                    s.eta, s.k, s.interior);
+PATHLAB_WIRE_FIELDS(Medium, s.name, s.sigmaT, s.albedo, s.g);
 PATHLAB_WIRE_FIELDS(RoughConductor, s.roughness, s.f0, s.exactFresnel, s.eta, s.k);
 PATHLAB_WIRE_FIELDS(RoughPlastic, s.roughness, s.diffuse, s.ior);
 PATHLAB_WIRE_FIELDS(TriangleMesh, s.name, s.positions, s.normals, s.triangles, s.material);
@@ -250,7 +251,8 @@ struct Fields<Environment> {
 template <>
 struct Fields<Scene> {
   static auto tie(Scene& s) {
-    return std::tie(s.source, s.camera, s.render, s.materials, s.meshes, s.spheres, s.pointLights, s.environment);
+    return std::tie(s.source, s.camera, s.render, s.materials, s.meshes, s.spheres, s.pointLights, s.environment,
+                    s.media, s.medium);
   }
 };
 inline void read(Reader& r, Scene& s) {

@@ -272,7 +272,7 @@ PixelMoments checkImage(ImageCase c) {
     const Image mean = readImage(meanPath), variance = readImage(variancePath);
     reference = {mean.width, mean.height, 0, mean.pixels, variance.pixels, 0, true, {}};
   } catch (const Error& e) {
-    FAIL("the reference image is missing (tools/make-reference-images writes it): " << e.what());
+    FAIL("the reference image is missing (tools/make-reference-images writes it): " << std::string(e.what()));
   }
   REQUIRE_MESSAGE(reference.width == c.scene.render.width, "the reference image " << meanPath << " is stale");
   REQUIRE_MESSAGE(reference.height == c.scene.render.height, "the reference image " << meanPath << " is stale");

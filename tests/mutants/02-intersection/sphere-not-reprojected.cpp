@@ -113,6 +113,7 @@ SurfacePoint sphereSurfacePoint(const Ray& ray, float t, const Point3& center, f
   SurfacePoint s;
   const Vec3 outward = glm::normalize(ray.at(t) - center);
   s.point = ray.at(t);
+  (void)radius;
   s.geometricNormal = outward;
   s.shadingNormal = outward;
   return s;

@@ -1,0 +1,670 @@
+// Autograder suite for task 12 — homogeneous participating media. Tests run
+// from basic to advanced; the first failure is usually the root cause.
+// candidate::f(...) is the student's f, computed in the candidate process
+// (calls.h).
+//
+// No test pins a convention: any inversion of the exponential (ln u or
+// ln(1 - u)), any way of turning the Henyey-Greenstein CDF into a direction
+// (either end of u, any frame around the direction, any phi), any unbiased
+// transmittance estimator (exact, or a free flight that passes or not), and
+// any order of random numbers pass. Statistical checks: chi-square tests at
+// alpha = 1e-5 each, means within 5 judged standard errors (5.7e-7 each);
+// the samplers' inputs are stratified, so a correct sampler's counts are
+// all but exact and those tests cannot fail it at all.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "calls.h"
+#include "check.h"
+#include "grading.h"
+#include "image_scenes.h"
+#include "image_test.h"
+#include "meshes.h"
+#include "reference_noise.h"
+#include "render_support.h"
+#include "scene/scene_io.h"
+#include "statistics.h"
+#include "util/frame.h"
+
+using namespace pathlab;
+using namespace pathlab::test;
+
+namespace {
+
+constexpr double kChiSquareP = 1e-5;
+constexpr double kPiD = std::numbers::pi;
+
+// ---- the judge's own formulas, in double ------------------------------------
+
+double hgPdf(double cosTheta, double g) {
+  const double d = 1.0 + g * g - 2.0 * g * cosTheta;
+  return (1.0 - g * g) / (4.0 * kPiD * d * std::sqrt(d));
+}
+
+// P(cos theta <= c) under Henyey-Greenstein (cos against the direction travelled).
+double hgCdf(double c, double g) {
+  if (std::abs(g) < 1e-9) return 0.5 * (c + 1.0);
+  return (1.0 - g * g) / (2.0 * g) * (1.0 / std::sqrt(1.0 + g * g - 2.0 * g * c) - 1.0 / (1.0 + g));
+}
+
+// n stratified numbers in (0, 1), shuffled by a fixed permutation (a sampler
+// may use u any way it likes; the set is what matters).
+std::vector<float> stratified(int n) {
+  std::vector<float> us(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) us[size_t(i)] = float((i + 0.5) / n);
+  Random random = Random::fixed(5);
+  for (int i = n - 1; i > 0; --i) std::swap(us[size_t(i)], us[size_t(random.uniform(0.0, i + 1.0 - 1e-9))]);
+  return us;
+}
+
+// ---- scenes ------------------------------------------------------------------
+
+MediumIndex addMedium(Scene& scene, float sigmaT, Color albedo, float g) {
+  scene.media.push_back(Medium{"m" + std::to_string(scene.media.size()), sigmaT, albedo, g});
+  return MediumIndex(scene.media.size() - 1);
+}
+
+uint32_t addInterface(Scene& scene, MediumIndex interior) {
+  Material m;
+  m.name = "interface " + std::to_string(interior);
+  m.type = MaterialType::Interface;
+  m.interior = interior;
+  scene.materials.push_back(m);
+  return uint32_t(scene.materials.size() - 1);
+}
+
+// A sphere of `medium` behind an interface, as an analytic sphere or a
+// closed mesh (outward normals): both must bound a medium alike.
+void addMediumSphere(Scene& scene, Point3 centre, float radius, MediumIndex medium, bool mesh) {
+  const uint32_t material = addInterface(scene, medium);
+  if (!mesh) {
+    scene.spheres.push_back(Sphere{centre, radius, material});
+    return;
+  }
+  TriangleMesh sphere = icosphere(4, centre, radius);
+  sphere.material = material;
+  scene.meshes.push_back(sphere);
+}
+
+// The length of a segment from o along unit d, up to `length`, inside a sphere.
+double chordInside(DVec3 o, DVec3 d, double length, DVec3 centre, double radius) {
+  const DVec3 oc = o - centre;
+  const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - radius * radius, disc = b * b - c;
+  if (disc <= 0.0) return 0.0;
+  const double t0 = std::max(0.0, -b - std::sqrt(disc)), t1 = std::min(length, -b + std::sqrt(disc));
+  return std::max(0.0, t1 - t0);
+}
+
+}  // namespace
+
+// ---- T12.1 ------------------------------------------------------------------
+
+TEST_CASE("T12.1 free flight: distances follow exp(-sigmaT t), and the rest reach the surface" *
+          grading(4, "invert the CDF 1 - exp(-sigmaT t): t = -ln(1 - u) / sigmaT; a flight that would end at or "
+                     "past tMax reaches the surface instead (scattered false, t = tMax). Sampling with the wrong "
+                     "coefficient, or without the surface, shows as a skewed histogram")) {
+  constexpr int kN = 20000, kBins = 16;
+  const std::vector<float> us = stratified(kN);
+  struct Case {
+    float sigmaT, tMax;
+  };
+  for (const Case c : {Case{1.0f, kInfinity}, Case{2.5f, 0.6f}, Case{0.3f, 2.0f}, Case{40.0f, 0.05f}, Case{0.02f, 3.0f}}) {
+    std::vector<calls::FlightQuery> queries;
+    for (float u : us) queries.emplace_back(c.sigmaT, c.tMax, u);
+    const std::vector<FreeFlight> flights = candidate::sampleFreeFlight(queries);
+    REQUIRE(flights.size() == queries.size());
+    // kBins bins of equal probability among the flights that scatter, and one for those that pass.
+    const double pass = std::isinf(c.tMax) ? 0.0 : std::exp(-double(c.sigmaT) * double(c.tMax));
+    std::vector<double> observed(kBins + 1, 0.0), expected(kBins + 1, (1.0 - pass) * kN / kBins);
+    expected[kBins] = pass * kN;
+    int bad = 0;
+    std::string example;
+    for (size_t i = 0; i < flights.size(); ++i) {
+      const FreeFlight& f = flights[i];
+      if (f.scattered && f.t >= 0.0f && f.t < c.tMax) {
+        const double p = -std::expm1(-double(c.sigmaT) * double(f.t)) / (1.0 - pass);  // P(T <= t | scattered)
+        observed[size_t(std::clamp(int(p * kBins), 0, kBins - 1))] += 1.0;
+      } else if (!f.scattered && (f.t == c.tMax || std::abs(f.t - c.tMax) <= 1e-6f * c.tMax)) {
+        observed[kBins] += 1.0;
+      } else if (bad++ == 0) {
+        example = "u = " + std::to_string(us[i]) + " gave t = " + std::to_string(f.t) + ", scattered " +
+                  (f.scattered ? "true" : "false");
+      }
+    }
+    CAPTURE(c.sigmaT);
+    CAPTURE(c.tMax);
+    INFO("flights that scatter must end in [0, tMax), the others at tMax exactly; " << bad << " did not ("
+                                                                                    << example << ")");
+    CHECK(bad == 0);
+    const ChiSquareResult r = chiSquareTest(observed, expected);
+    INFO("distances against exp(-sigmaT t), " << kBins << " bins of equal probability and one for the surface: chi2 "
+                                               << r.statistic << ", p = " << r.pValue << "; " << observed[kBins]
+                                               << " reached the surface, expected " << expected[kBins] << " " << r.failure);
+    CHECK(r.pValue >= kChiSquareP);
+  }
+}
+
+TEST_CASE("T12.1 free flight: the pdf is the density at t, or the probability of reaching the surface" *
+          grading(2, "scattered: pdf = sigmaT exp(-sigmaT t), the density of the t you returned; at the surface: "
+                     "pdf = exp(-sigmaT tMax), the probability of getting there")) {
+  const std::vector<float> us = stratified(2000);
+  for (const float sigmaT : {0.5f, 3.0f, 60.0f}) {
+    for (const float tMax : {0.25f, 2.0f, kInfinity}) {
+      std::vector<calls::FlightQuery> queries;
+      for (float u : us) queries.emplace_back(sigmaT, tMax, u);
+      const std::vector<FreeFlight> flights = candidate::sampleFreeFlight(queries);
+      REQUIRE(flights.size() == queries.size());
+      int bad = 0;
+      std::string example;
+      for (const FreeFlight& f : flights) {
+        const double expected = f.scattered ? double(sigmaT) * std::exp(-double(sigmaT) * double(f.t))
+                                            : std::exp(-double(sigmaT) * double(tMax));
+        if (!(std::abs(double(f.pdf) - expected) <= 1e-4 * expected + 1e-30) && bad++ == 0) {
+          example = std::string(f.scattered ? "scattered" : "at the surface") + " at t = " + std::to_string(f.t) +
+                    ": pdf " + std::to_string(f.pdf) + ", expected " + std::to_string(expected);
+        }
+      }
+      CAPTURE(sigmaT);
+      CAPTURE(tMax);
+      INFO(bad << " of " << flights.size() << " pdfs wrong (" << example << ")");
+      CHECK(bad == 0);
+    }
+  }
+}
+
+TEST_CASE("T12.1 free flight: thin and dense media, a surface at 0, u at the ends of [0, 1)" *
+          grading(1, "no t may be NaN, infinite (unless tMax is) or negative: mind ln(0) at u = 0 (use 1 - u, or "
+                     "log1p(-u)), and a surface at distance 0 is always reached")) {
+  std::vector<calls::FlightQuery> queries;
+  for (const float sigmaT : {1e-5f, 1.0f, 1e5f})
+    for (const float tMax : {0.0f, 1e-3f, 1.0f, 1e4f})
+      for (const float u : {0.0f, 1e-7f, 0.5f, 1.0f - 1e-7f, 0.99999994f}) queries.emplace_back(sigmaT, tMax, u);
+  const std::vector<FreeFlight> flights = candidate::sampleFreeFlight(queries);
+  REQUIRE(flights.size() == queries.size());
+  for (size_t i = 0; i < flights.size(); ++i) {
+    // (Not structured bindings: Clang 14 cannot capture one in CAPTURE's lambda.)
+    const float sigmaT = std::get<0>(queries[i]), tMax = std::get<1>(queries[i]), u = std::get<2>(queries[i]);
+    const FreeFlight& f = flights[i];
+    CAPTURE(sigmaT);
+    CAPTURE(tMax);
+    CAPTURE(u);
+    CAPTURE(f.t);
+    CAPTURE(f.scattered);
+    CAPTURE(f.pdf);
+    CHECK(std::isfinite(f.t));
+    CHECK(f.t >= 0.0f);
+    CHECK(f.t <= tMax);
+    CHECK(std::isfinite(f.pdf));
+    CHECK(f.pdf >= 0.0f);
+    // A pdf of 0 is honest only for a surface whose probability underflows
+    // (-ln(u) at u = 0 reaches it; the exponentials cancel in the weight).
+    if (f.scattered || std::exp(-double(sigmaT) * double(tMax)) > 1e-30) CHECK(f.pdf > 0.0f);
+    if (tMax == 0.0f) CHECK_FALSE(f.scattered);
+    // Where the surface is out of reach (exp(-sigmaT tMax) < 1e-30), every u
+    // away from the ends of [0, 1) scatters, whichever end of it a sampler
+    // maps to short flights.
+    if (sigmaT * tMax > 70.0f && u >= 1e-7f && u <= 1.0f - 1e-7f) CHECK(f.scattered);
+  }
+}
+
+// ---- T12.2 ------------------------------------------------------------------
+
+TEST_CASE("T12.2 phase: Henyey-Greenstein's value, a density over the sphere" *
+          grading(2, "p = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos)^1.5) with cos between the direction travelled and "
+                     "the new one: g > 0 is onwards. pbrt's cosine against the direction back flips g")) {
+  std::vector<calls::PhaseQuery> queries;
+  for (const float g : {-0.9f, -0.5f, -0.1f, 0.0f, 0.2f, 0.7f, 0.95f})
+    for (int i = 0; i <= 100; ++i) queries.emplace_back(-1.0f + 0.02f * float(i), g);
+  const std::vector<float> values = candidate::henyeyGreenstein(queries);
+  REQUIRE(values.size() == queries.size());
+  for (size_t i = 0; i < values.size(); ++i) {
+    const float cosTheta = std::get<0>(queries[i]), g = std::get<1>(queries[i]);
+    const double expected = hgPdf(cosTheta, g);
+    CAPTURE(cosTheta);
+    CAPTURE(g);
+    CAPTURE(values[i]);
+    CAPTURE(expected);
+    CHECK(std::abs(double(values[i]) - expected) <= 1e-4 * expected);
+  }
+}
+
+TEST_CASE("T12.2 phase sampling: directions against the Henyey-Greenstein pdf, and their mean cosine is g" *
+          grading(4, "invert the CDF of cos theta (cos = (1 + g^2 - s^2) / 2g, s = (1 - g^2) / (1 - g + 2 g u)), "
+                     "phi uniform, and build the direction around the one travelled (Frame::fromNormal): the "
+                     "histogram of cosines must follow p, and their mean is g")) {
+  constexpr int kN = 40000, kCosBins = 20, kPhiBins = 8;
+  const std::vector<Vec2> us = uniformPoints(kN, 61);
+  Random random(61);
+  for (const float g : {-0.8f, -0.3f, 0.0f, 0.4f, 0.9f}) {
+    const DVec3 travel = random.unitVector();
+    std::vector<calls::PhaseSampleQuery> queries;
+    for (const Vec2& u : us) queries.emplace_back(Vec3(travel), g, u);
+    const std::vector<Vec3> directions = candidate::sampleHenyeyGreenstein(queries);
+    REQUIRE(directions.size() == queries.size());
+    // Cells of equal probability in cos theta, times equal ranges of phi in the judge's own frame.
+    const Frame frame = Frame::fromNormal(Vec3(travel));
+    std::vector<double> observed(kCosBins * kPhiBins, 0.0), expected(kCosBins * kPhiBins, double(kN) / (kCosBins * kPhiBins));
+    MeanEstimate cosine;
+    int notUnit = 0;
+    for (const Vec3& w : directions) {
+      const DVec3 d(w);
+      if (!(std::abs(glm::length(d) - 1.0) <= 1e-4)) {
+        ++notUnit;
+        continue;
+      }
+      const double c = std::clamp(glm::dot(d, travel), -1.0, 1.0);
+      cosine.add(c);
+      const double phi = std::atan2(double(glm::dot(w, frame.t)), double(glm::dot(w, frame.s))) + kPiD;
+      const int i = std::clamp(int(hgCdf(c, g) * kCosBins), 0, kCosBins - 1);
+      const int j = std::clamp(int(phi / (2.0 * kPiD) * kPhiBins), 0, kPhiBins - 1);
+      observed[size_t(i * kPhiBins + j)] += 1.0;
+    }
+    CAPTURE(g);
+    INFO(notUnit << " of " << kN << " directions not unit (or not finite)");
+    CHECK(notUnit == 0);
+    const ChiSquareResult r = chiSquareTest(observed, expected);
+    INFO("chi-square of (cos theta, phi) against Henyey-Greenstein: chi2 " << r.statistic << ", p = " << r.pValue
+                                                                           << " " << r.failure);
+    CHECK(r.pValue >= kChiSquareP);
+    INFO("mean cosine with the direction travelled: " << cosine.describe(g));
+    CHECK(cosine.agrees(g));
+  }
+}
+
+// ---- T12.3 ------------------------------------------------------------------
+
+namespace {
+
+// The candidate's transmittance for each query, kCalls times each (its own
+// random streams), judged against `expected`: values in [0, 1], the mean
+// within 5 standard errors of the judge's value, with a variance of at most
+// T (1 - T), the most an estimator with values in [0, 1] and mean T can have.
+void checkTransmittance(const Scene& scene, const std::vector<calls::TransmittanceQuery>& queries,
+                        const std::vector<double>& expected, const std::string& what) {
+  constexpr int kCalls = 20000;
+  std::vector<calls::TransmittanceQuery> all;
+  for (const auto& q : queries)
+    for (int k = 0; k < kCalls; ++k) {
+      auto copy = q;
+      std::get<3>(copy) = uint32_t(k);
+      std::get<4>(copy) = testSeed(std::get<4>(q));
+      all.push_back(copy);
+    }
+  const std::vector<float> values = candidate::transmittance(scene, all);
+  REQUIRE(values.size() == all.size());
+  for (size_t q = 0; q < queries.size(); ++q) {
+    MeanEstimate m;
+    int outside = 0;
+    for (int k = 0; k < kCalls; ++k) {
+      const float v = values[q * kCalls + size_t(k)];
+      if (!(v >= 0.0f && v <= 1.0f)) ++outside;
+      m.add(std::isfinite(v) ? double(v) : 1e30);
+    }
+    const double t = expected[q];
+    m.setVarianceCeiling(std::max(t * (1.0 - t), 1e-12));
+    const Ray& ray = std::get<0>(queries[q]);
+    CAPTURE(what);
+    INFO("ray from " << str(ray.origin) << " along " << str(ray.direction) << ", length " << std::get<1>(queries[q])
+                     << ", starting in medium " << std::get<2>(queries[q]));
+    INFO(outside << " of " << kCalls << " values outside [0, 1]");
+    CHECK(outside == 0);
+    INFO(m.describe(t));
+    // An exact estimator has no noise to hide in: the rays' offsets at each
+    // interface (a few 1e-5 along the ray) shift its value by about 1e-4 of T.
+    CHECK((m.agrees(t) || std::abs(m.mean() - t) <= 1e-3 * t));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("T12.3 transmittance: exp(-sigmaT d) in a fog, through interfaces into other media, 0 past a surface" *
+          grading(4, "multiply exp(-sigmaT length) over each stretch, in the medium of that stretch; go on past an "
+                     "interface (scene.mediumAcross gives the medium beyond it); stop with 0 at any other surface")) {
+  // A fog everywhere; no surfaces.
+  {
+    Scene scene;
+    scene.medium = addMedium(scene, 0.7f, Color(0.5f), 0.3f);
+    std::vector<calls::TransmittanceQuery> q;
+    std::vector<double> expected;
+    for (const float d : {0.05f, 1.0f, 3.0f, kInfinity}) {
+      q.emplace_back(Ray{Point3(1, 2, 3), glm::normalize(Vec3(0.3f, -1, 0.2f))}, d, scene.medium, 0u, 301u);
+      expected.push_back(std::exp(-0.7 * double(d)));
+    }
+    checkTransmittance(scene, q, expected, "a fog of sigmaT 0.7, no surfaces");
+  }
+  // Spheres of medium in a vacuum, and in a fog of another medium: an analytic sphere and a mesh.
+  for (const bool fog : {false, true}) {
+    Scene scene;
+    const MediumIndex inside = addMedium(scene, 1.3f, Color(0.9f), 0.0f);
+    if (fog) scene.medium = addMedium(scene, 0.25f, Color(0.9f), 0.5f);
+    addMediumSphere(scene, Point3(0, 0, 0), 1.0f, inside, false);
+    addMediumSphere(scene, Point3(3, 0, 0), 0.8f, inside, true);
+    std::vector<calls::TransmittanceQuery> q;
+    std::vector<double> expected;
+    const double outsideSigma = fog ? 0.25 : 0.0;
+    for (const double y : {0.0, 0.5, 0.75, 0.95}) {
+      const DVec3 o(-2.0, y, 0.1), d = glm::normalize(DVec3(1.0, 0.0, 0.0));
+      const double length = 6.0;
+      const double a = chordInside(o, d, length, DVec3(0.0), 1.0);
+      // The mesh's chord: the icosphere is not the sphere; the judge measures it on the mesh itself.
+      q.emplace_back(Ray{Point3(o), Vec3(d)}, float(length), scene.medium, 0u, 302u);
+      expected.push_back(a);  // finished below
+    }
+    // From inside the first sphere, out through it and into the fog.
+    q.emplace_back(Ray{Point3(0, 0, 0), Vec3(0, 1, 0)}, 2.5f, inside, 0u, 303u);
+    expected.push_back(1.0);
+    // The mesh's chords, measured with the judge's own hits.
+    Rig rig(scene);
+    TraceContext context = rig.context();
+    for (size_t i = 0; i < q.size(); ++i) {
+      const Ray& ray = std::get<0>(q[i]);
+      const float length = std::get<1>(q[i]);
+      double inMedium = 0.0;
+      bool in = std::get<2>(q[i]) == inside;
+      float at = 0.0f;
+      for (int k = 0; k < 16; ++k) {
+        const std::optional<Hit> hit = context.intersect(ray, Interval{at, length});
+        const float next = hit ? hit->t : length;
+        if (in) inMedium += next - at;
+        if (!hit) break;
+        in = glm::dot(ray.direction, hit->geometricNormal) < 0.0f;
+        at = next * (1.0f + 1e-6f) + 1e-6f;
+      }
+      expected[i] = std::exp(-1.3 * inMedium - outsideSigma * (double(length) - inMedium));
+    }
+    checkTransmittance(scene, q, expected,
+                       fog ? "spheres of sigmaT 1.3 in a fog of 0.25" : "spheres of sigmaT 1.3 in a vacuum");
+  }
+  // Surfaces that block: a diffuse wall, and glass (light through glass is no shadow ray's business).
+  {
+    Scene scene;
+    scene.medium = addMedium(scene, 0.4f, Color(1.0f), 0.0f);
+    addQuad(scene, Point3(2, -5, -5), Vec3(0, 10, 0), Vec3(0, 0, 10), addMaterial(scene, Color(0.5f)));
+    Material glass;
+    glass.type = MaterialType::Glass;
+    glass.interior = addMedium(scene, 2.0f, Color(1.0f), 0.0f);
+    scene.materials.push_back(glass);
+    scene.spheres.push_back(Sphere{Point3(0, 5, 0), 1.0f, uint32_t(scene.materials.size() - 1)});
+    std::vector<calls::TransmittanceQuery> q = {
+        {Ray{Point3(0, 0, 0), Vec3(1, 0, 0)}, 4.0f, scene.medium, 0u, 304u},
+        {Ray{Point3(0, 0, 0), Vec3(0, 1, 0)}, 8.0f, scene.medium, 0u, 305u},
+        {Ray{Point3(0, 0, 0), Vec3(1, 0, 0)}, 1.5f, scene.medium, 0u, 306u}};
+    checkTransmittance(scene, q, {0.0, 0.0, std::exp(-0.4 * 1.5)}, "a wall at x = 2 and a glass ball at y = 5");
+  }
+  // To infinity (towards the sky) out of a sphere of medium in a vacuum: past
+  // its interface the ray goes on, and a wall beyond still blocks it.
+  {
+    Scene scene;
+    addMediumSphere(scene, Point3(0, 0, 0), 1.0f, addMedium(scene, 1.3f, Color(0.9f), 0.0f), false);
+    addQuad(scene, Point3(2, -5, -5), Vec3(0, 10, 0), Vec3(0, 0, 10), addMaterial(scene, Color(0.5f)));
+    const MediumIndex inside = 0;
+    std::vector<calls::TransmittanceQuery> q = {{Ray{Point3(0, 0, 0), Vec3(1, 0, 0)}, kInfinity, inside, 0u, 307u},
+                                                {Ray{Point3(0, 0, 0), Vec3(0, 1, 0)}, kInfinity, inside, 0u, 308u}};
+    checkTransmittance(scene, q, {0.0, std::exp(-1.3)}, "a sphere of sigmaT 1.3, radius 1, and a wall at x = 2");
+  }
+}
+
+TEST_CASE("T12.3 direct lighting in media: through the phase function in a fog, and onto a surface in it" *
+          grading(4, "task 4's estimate with two changes: the shadow ray's transmittance instead of its visibility, "
+                     "and at a point in a medium the phase function henyeyGreenstein(dot(-wo, wi), g) instead of "
+                     "f cos. Too bright: the shadow rays ignore the medium")) {
+  constexpr int kCalls = 4000;
+  Scene scene;
+  scene.medium = addMedium(scene, 0.6f, Color(0.8f), 0.0f);
+  const uint32_t floor = addMaterial(scene, Color(0.7f));
+  addQuad(scene, Point3(-10, 0, 10), Vec3(20, 0, 0), Vec3(0, 0, -20), floor);
+  // A small square area light facing down at height 2.
+  const Color le(4.0f, 3.0f, 2.0f);
+  const Point3 corner(-0.25f, 2.0f, -0.25f);
+  const Vec3 eu(0.5f, 0.0f, 0.0f), ev(0.0f, 0.0f, 0.5f);  // u x v points down
+  addQuad(scene, corner, eu, ev, addMaterial(scene, Color(0.0f), le));
+  scene.pointLights.push_back(PointLight{Point3(1.5f, 1.5f, 0.5f), Color(2.0f, 2.5f, 3.0f)});
+  // Three light samples per light: the estimate is their mean (one sample alone is right too).
+  const calls::TraceSettings settings{3, 4};
+
+  struct Vertex {
+    bool onSurface;
+    DVec3 point, wo;
+    double g;
+  };
+  const std::vector<Vertex> vertices = {
+      {false, DVec3(0.2, 1.0, 0.1), glm::normalize(DVec3(0.3, -1.0, 0.4)), 0.7},
+      {false, DVec3(-0.5, 0.6, 0.3), glm::normalize(DVec3(-0.2, 0.3, 1.0)), -0.4},
+      {true, DVec3(0.3, 0.0, -0.2), glm::normalize(DVec3(0.1, 1.0, 0.6)), 0.0}};
+  std::vector<calls::VertexQuery> queries;
+  for (size_t v = 0; v < vertices.size(); ++v) {
+    const Vertex& x = vertices[v];
+    // The query's ray arrives along -wo: at the surface point, or `distance` along it in the medium.
+    const DVec3 origin = x.point + 1.5 * x.wo;
+    for (int k = 0; k < kCalls; ++k) {
+      queries.push_back({Ray{Point3(origin), Vec3(-x.wo)}, x.onSurface, 1.5f, float(x.g), scene.medium, uint32_t(k),
+                         testSeed(400 + v)});
+    }
+  }
+  const std::vector<Color> values = candidate::directLightingInMedia(scene, settings, queries);
+  REQUIRE(values.size() == queries.size());
+
+  const double sigmaT = 0.6;
+  for (size_t v = 0; v < vertices.size(); ++v) {
+    const Vertex& x = vertices[v];
+    // The judge's value: the point light exactly, the area light by quadrature.
+    auto scattering = [&](const DVec3& wi) {
+      if (!x.onSurface) return hgPdf(glm::dot(-x.wo, wi), x.g);
+      return std::max(0.0, wi.y) * 0.7 / kPiD;  // the floor's normal is +y
+    };
+    // Bounds for the variance's ceiling: a correct estimate lies between 0
+    // and the point light's term plus the largest an area-light sample can
+    // be, both untransmitted (an estimator of the transmittance may return
+    // 1 or 0); its variance is at most the square of that range over 4.
+    DVec3 expected(0.0);
+    double pointBound = 0.0, largest = 0.0;
+    {
+      const DVec3 toLight = DVec3(1.5, 1.5, 0.5) - x.point;
+      const double r = glm::length(toLight);
+      expected += DVec3(2.0, 2.5, 3.0) * scattering(toLight / r) * std::exp(-sigmaT * r) / (r * r);
+      pointBound = 3.0 * scattering(toLight / r) / (r * r);
+    }
+    constexpr int kGrid = 200;
+    for (int i = 0; i < kGrid; ++i)
+      for (int j = 0; j < kGrid; ++j) {
+        const DVec3 p = DVec3(corner) + (i + 0.5) / kGrid * DVec3(eu) + (j + 0.5) / kGrid * DVec3(ev);
+        const DVec3 toLight = p - x.point;
+        const double r = glm::length(toLight);
+        const DVec3 wi = toLight / r;
+        const double cosLight = wi.y;  // the light faces down: -(-y) . wi
+        if (cosLight <= 0.0) continue;
+        const double value = scattering(wi) * cosLight / (r * r);
+        expected += DVec3(le) * value * std::exp(-sigmaT * r) * (0.25 / (kGrid * kGrid));
+        largest = std::max(largest, value * 0.25);  // f Le / pdf, pdf = r^2 / (A cos): A = 0.25
+      }
+    for (int channel = 0; channel < 3; ++channel) {
+      MeanEstimate m;
+      for (int k = 0; k < kCalls; ++k) {
+        const float value = values[v * kCalls + size_t(k)][channel];
+        m.add(std::isfinite(value) ? double(value) : 1e30);
+      }
+      const double range = pointBound + 4.0 * largest;  // Le <= 4, I <= 3
+      m.setVarianceCeiling(range * range / 4.0);
+      CAPTURE(v);
+      CAPTURE(channel);
+      INFO(std::string(x.onSurface ? "a diffuse floor (albedo 0.7) in a fog of sigmaT 0.6" : "a point in a fog of sigmaT 0.6")
+           << ", g " << x.g << ", at " << str(Vec3(x.point)) << ", wo " << str(Vec3(x.wo))
+           << "; a point light and a small area light above");
+      INFO(m.describe(expected[channel]));
+      CHECK(m.agrees(expected[channel]));
+    }
+  }
+}
+
+// ---- T12.4 ------------------------------------------------------------------
+
+TEST_CASE("T12.4 furnace: a medium that absorbs nothing, in an index-matched sphere under a grey sky, returns the sky" *
+          grading(4, "with albedo 1 no light is lost: every path must return the sky's 0.8 on average, whatever sigmaS and g. "
+                     "Less: the surface's weight lacks 1 / P(pass), or a scattering event was counted as absorption; "
+                     "more: light counted twice (emission after direct lighting)")) {
+  struct Case {
+    float sigmaT, g;
+    bool mesh;
+  };
+  constexpr float kSky = 0.8f;
+  for (const Case c : {Case{0.5f, -0.6f, false}, Case{2.0f, 0.0f, true}, Case{5.0f, 0.85f, false}}) {
+    Scene scene;
+    const MediumIndex medium = addMedium(scene, c.sigmaT, Color(1.0f), c.g);
+    addMediumSphere(scene, Point3(0.0f), 1.0f, medium, c.mesh);
+    scene.environment = Environment{};
+    scene.environment->color = Color(kSky);
+    Random random(71);
+    std::vector<calls::PathQuery> queries;
+    for (int i = 0; i < 6000; ++i) {
+      const DVec3 target = random.inCube(0.6);
+      const Point3 origin(0.0f, 0.0f, 4.0f);
+      queries.emplace_back(Ray{origin, Vec3(glm::normalize(target - DVec3(origin)))}, uint32_t(i), testSeed(71));
+    }
+    MeanEstimate m;
+    // Two light samples at each vertex (their mean; one alone is right too).
+    for (const Color& L : candidate::tracePathsInMedia(scene, {2, 1000}, queries)) {
+      // In units of the sky (not 1, so that a radiance divided where it should multiply shows).
+      m.add(std::isfinite(L.x + L.y + L.z) ? double(L.x + L.y + L.z) / (3.0 * kSky) : 1e30);
+    }
+    limitNoise(m, "12-media");
+    CAPTURE(c.sigmaT);
+    CAPTURE(c.g);
+    INFO(std::string(c.mesh ? "a sphere mesh" : "an analytic sphere") << " of medium, radius 1; paths aimed at it from outside");
+    INFO(m.describe(1.0));
+    CHECK(m.agrees(1.0));
+  }
+}
+
+TEST_CASE("T12.4 absorption: behind a slab that only absorbs, a light is dimmed by exactly exp(-sigmaT d)" *
+          grading(3, "a medium of albedo 0 scatters nothing: what passes is the light times the transmittance. "
+                     "Brighter: the free flight samples with sigmaS (0 here) instead of sigmaT; darker: the surface "
+                     "is weighted by the transmittance without dividing by P(pass)")) {
+  Scene scene;
+  const MediumIndex ink = addMedium(scene, 1.2f, Color(0.0f), 0.0f);
+  // An interface box, x in [-1, 1], in front of an emitting wall at z = -3 facing +z.
+  TriangleMesh box;
+  box.positions = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+  box.triangles = {{0, 3, 2}, {0, 2, 1}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                   {3, 7, 6}, {3, 6, 2}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
+  box.material = addInterface(scene, ink);
+  scene.meshes.push_back(box);
+  const Color le(2.0f, 1.0f, 0.5f);
+  addQuad(scene, Point3(-10, -10, -3), Vec3(20, 0, 0), Vec3(0, 20, 0), addMaterial(scene, Color(0.0f), le));
+  Random random(81);
+  std::vector<calls::PathQuery> queries;
+  std::vector<double> distances;
+  for (int i = 0; i < 4000; ++i) {
+    const Point3 origin(float(random.uniform(-0.5, 0.5)), float(random.uniform(-0.5, 0.5)), 4.0f);
+    const Vec3 direction = glm::normalize(Vec3(float(random.uniform(-0.05, 0.05)), float(random.uniform(-0.05, 0.05)), -1.0f));
+    queries.emplace_back(Ray{origin, direction}, uint32_t(i), testSeed(81));
+    distances.push_back(2.0 / std::abs(double(direction.z)));  // the box's depth along the ray (it stays inside x, y)
+  }
+  const std::vector<Color> radiance = candidate::tracePathsInMedia(scene, {1, 8}, queries);
+  REQUIRE(radiance.size() == queries.size());
+  MeanEstimate ratio;  // radiance / (Le exp(-sigmaT d)), in red
+  for (size_t i = 0; i < radiance.size(); ++i) {
+    const double expected = double(le.x) * std::exp(-1.2 * distances[i]);
+    ratio.add(std::isfinite(radiance[i].x) ? double(radiance[i].x) / expected : 1e30);
+  }
+  limitNoise(ratio, "12-media");
+  INFO("camera rays through 2 units of a medium of sigmaT 1.2, albedo 0, onto a light of radiance " << str(le)
+       << "; your radiance over Le exp(-sigmaT d): " << ratio.describe(1.0));
+  CHECK(ratio.agrees(1.0));
+
+  // Beside the slab, through a vacuum: the light itself, Le. No noise is
+  // needed here (Russian roulette on the camera ray, if any, may add up to a
+  // variance of 0.1), and 40,000 rays leave a bias of 1 % nowhere to hide.
+  std::vector<calls::PathQuery> clear;
+  for (int i = 0; i < 40000; ++i) {
+    const Point3 origin(float(random.uniform(1.5, 2.5)), float(random.uniform(-0.5, 0.5)), 4.0f);
+    clear.emplace_back(Ray{origin, Vec3(0.0f, 0.0f, -1.0f)}, uint32_t(i), testSeed(82));
+  }
+  MeanEstimate seen;  // radiance / Le, in red
+  seen.setVarianceCeiling(0.1);
+  for (const Color& L : candidate::tracePathsInMedia(scene, {1, 8}, clear)) {
+    seen.add(std::isfinite(L.x) ? double(L.x) / double(le.x) : 1e30);
+  }
+  INFO("camera rays beside the medium, through a vacuum onto the light: your radiance over Le: " << seen.describe(1.0));
+  CHECK_FALSE(seen.tooNoisy());
+  CHECK(seen.agrees(1.0));
+}
+
+namespace {
+
+// media/scenes/fog-shafts.json at image-test size: the Cornell box full of
+// fog up to a slotted plate (an interface box bounds it), a point light above
+// the plate, out of the fog.
+Scene fogBox() {
+  return sceneFromJson(R"({
+    "camera": { "position": [0, 0.75, 3.1], "look_at": [0, 0.75, 0], "up": [0, 1, 0], "vfov": 38 },
+    "render": { "width": 48, "height": 36, "spp": 64, "max_depth": 6 },
+    "media": { "fog": { "density": 0.6, "albedo": [0.9, 0.9, 0.9], "g": 0.3 } },
+    "materials": {
+      "white": { "albedo": [0.6, 0.6, 0.6] }, "red": { "albedo": [0.6, 0.2, 0.2] },
+      "blue": { "albedo": [0.2, 0.2, 0.6] }, "plate": { "albedo": [0.1, 0.1, 0.1] },
+      "fog boundary": { "type": "interface", "interior": "fog" }
+    },
+    "meshes": [
+      { "material": "white", "quad": { "corner": [-1, 0, 1], "edge_u": [2, 0, 0], "edge_v": [0, 0, -2] } },
+      { "material": "white", "quad": { "corner": [-1, 1.5, -1], "edge_u": [2, 0, 0], "edge_v": [0, 0, 2] } },
+      { "material": "white", "quad": { "corner": [-1, 0, -1], "edge_u": [2, 0, 0], "edge_v": [0, 1.5, 0] } },
+      { "material": "red", "quad": { "corner": [-1, 0, 1], "edge_u": [0, 0, -2], "edge_v": [0, 1.5, 0] } },
+      { "material": "blue", "quad": { "corner": [1, 0, -1], "edge_u": [0, 0, 2], "edge_v": [0, 1.5, 0] } },
+      { "material": "plate", "quad": { "corner": [-0.6, 1.15, 0.6], "edge_u": [0.4, 0, 0], "edge_v": [0, 0, -1.2] } },
+      { "material": "plate", "quad": { "corner": [-0.1, 1.15, 0.6], "edge_u": [0.2, 0, 0], "edge_v": [0, 0, -1.2] } },
+      { "material": "plate", "quad": { "corner": [0.2, 1.15, 0.6], "edge_u": [0.4, 0, 0], "edge_v": [0, 0, -1.2] } },
+      { "material": "fog boundary",
+        "positions": [[-1.01, -0.01, -1.01], [1.01, -0.01, -1.01], [1.01, 1.14, -1.01], [-1.01, 1.14, -1.01],
+                      [-1.01, -0.01, 1.0], [1.01, -0.01, 1.0], [1.01, 1.14, 1.0], [-1.01, 1.14, 1.0]],
+        "triangles": [[0, 3, 2], [0, 2, 1], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4], [3, 7, 6], [3, 6, 2],
+                      [0, 4, 7], [0, 7, 3], [1, 2, 6], [1, 6, 5]] }
+    ],
+    "spheres": [ { "center": [0.4, 0.3, 0.3], "radius": 0.3, "material": "white" } ],
+    "lights": [ { "type": "point", "position": [0, 1.33, 0], "intensity": [3, 3, 3] } ]
+  })", "fog box");
+}
+
+// A ball of a dense, coloured medium inside glass (media/scenes/jade.json's
+// pebble, simplified) on a floor, all in a thin haze (the scene's medium:
+// the camera is in it) under a large light. (No sky: light from infinitely
+// far away never gets through a haze that fills all space.)
+Scene jadeBall() {
+  return sceneFromJson(R"({
+    "camera": { "position": [0, 1.0, 3.0], "look_at": [0, 0.5, 0], "up": [0, 1, 0], "vfov": 35 },
+    "render": { "width": 40, "height": 30, "spp": 64, "max_depth": 32 },
+    "media": {
+      "jade": { "density": 6, "albedo": [0.7, 0.95, 0.8], "g": 0.2 },
+      "haze": { "density": 0.08, "albedo": [0.8, 0.8, 0.8], "g": -0.3 }
+    },
+    "medium": "haze",
+    "materials": {
+      "floor": { "albedo": [0.5, 0.5, 0.5] },
+      "light": { "albedo": [0, 0, 0], "emission": [3, 3, 3] },
+      "jade surface": { "type": "glass", "ior": 1.5, "interior": "jade" }
+    },
+    "meshes": [
+      { "material": "floor", "quad": { "corner": [-3, 0, 3], "edge_u": [6, 0, 0], "edge_v": [0, 0, -6] } },
+      { "material": "light", "quad": { "corner": [-1.5, 2.5, -1.5], "edge_u": [3, 0, 0], "edge_v": [0, 0, 3] } }
+    ],
+    "spheres": [ { "center": [0, 0.5, 0], "radius": 0.5, "material": "jade surface" } ]
+  })", "jade ball");
+}
+
+}  // namespace
+
+TEST_CASE("T12.4 image: the fog box with light shafts agrees with the converged picture" *
+          grading(3, "compare your picture with the reference (files named above): a fog too thin or too thick "
+                     "shows first in the shafts and on the far wall; shafts missing: the shadow rays ignore the fog")) {
+  checkImage({"12-media", "fog-box", fogBox(), {}});
+}
+
+TEST_CASE("T12.4 image: a ball of medium inside glass, in a haze under a light, agrees with the converged picture" *
+          grading(3, "the ball's medium is entered through glass: after a BSDF sample that crosses the surface the "
+                     "medium is scene.mediumAcross(hit, wi, medium); the haze is the camera's medium (scene.medium)")) {
+  checkImage({"12-media", "jade-ball", jadeBall(), {}});
+}
