@@ -4,12 +4,12 @@
 CI itself cannot run here as it runs on a fresh machine, so this checks what
 can be checked: the stages .ci/run times (`stage NAME SHARE COMMAND...`)
 are docs/ci.md's budget table, row for row (name, share, command); the
-shares add up to the table's total, within the ceiling of 60 minutes (a
-stage fails at one and a half times its share, and CI's own limit is 90
-minutes), today and with the extension tasks still to come (the table's
+shares add up to the table's total, within the ceiling of 60 minutes (CI's
+own limit is 90 minutes; its machines have run stages up to 1.6 times
+slower than the shares), today and with the extension tasks still to come (the table's
 "per new task" column: tasks 8-12); and .ci/run's stage function, run here
-on stand-in commands, passes a stage within one and a half times its share
-and fails one over it, with its time printed. The target, 30 minutes for
+on stand-in commands, passes a stage within its share and fails one over
+twice it, with its time printed. The target, 30 minutes for
 the seven core tasks and 40 with the five extensions, is printed against
 the shares: a run over it is a known weakness (docs/ci.md), not hidden.
 
@@ -27,8 +27,8 @@ import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
 
 # The target: 30 minutes for the seven core tasks, 40 with the five
 # extensions (tasks 8-12), 2 minutes each. The ceiling the shares must keep:
-# 60 minutes, so that a run whose every stage is at one and a half times
-# its share still ends within CI's 90.
+# 60 minutes, so that a run on a machine one and a half times slower than
+# the shares' still ends within CI's 90. (A stage fails at twice its share.)
 EXTENSIONS = max(0, len(pathlab_tasks.tasks()) - 7)
 TARGET, NEW_TASKS = 30 * 60 + EXTENSIONS * 120, 5 - EXTENSIONS
 CEILING = 60 * 60
@@ -89,12 +89,12 @@ def check(ci_run, doc, run_function=True):
                         f"{CEILING} s")
     if run_function:
         function = stage_function(ci_run)
-        within, over = run_stage(function, 1, 0), run_stage(function, 1, 2)  # 0 s of 1 s; 2 s of 1 s (> 1.5 s)
+        within, over = run_stage(function, 1, 0), run_stage(function, 1, 3)  # 0 s of 1 s; 3 s of 1 s (> 2 s)
         if within.returncode != 0 or "STAGE-PASSED" not in within.stdout or \
                 not re.search(r"[01] s of its share 1 s", within.stdout):
             problems.append(f"a stage within its share did not pass with its time printed: {within.stdout[-300:]}")
-        if over.returncode == 0 or "STAGE-PASSED" in over.stdout or "over one and a half times" not in over.stderr:
-            problems.append(f"a stage over 1.5 times its share did not fail: {over.stdout[-300:]} {over.stderr[-300:]}")
+        if over.returncode == 0 or "STAGE-PASSED" in over.stdout or "over twice its share" not in over.stderr:
+            problems.append(f"a stage over twice its share did not fail: {over.stdout[-300:]} {over.stderr[-300:]}")
     return problems
 
 
@@ -119,7 +119,7 @@ def main():
             # (Only while extension tasks are still to come: with all five in, the allowance counts for nothing.)
             **({"the per-task allowance over the ceiling": (ci_run, re.sub(
                 r"(\| `bash tools/quickstart.sh test` \| )\d+", r"\g<1>9999", doc))} if NEW_TASKS > 0 else {}),
-            "no failure over 1.5 times the share": (ci_run.replace("2 * took > 3 * share", "2 * took > 30 * share"), doc),
+            "no failure over twice the share": (ci_run.replace("took > 2 * share", "took > 20 * share"), doc),
         }
         # The stage timer is run again only where it was altered (its runs sleep).
         missed = [name for name, (c, d) in altered.items()
