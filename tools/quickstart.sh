@@ -23,8 +23,9 @@ build() {
 # release and its check, all under build/) compile the framework again with
 # the release build's flags. A compiler cache in build/ccache serves them:
 # paths are hashed relative to each tree, and the __FILE__ prefix map (each
-# tree maps its own root away) is left out of the key. Without ccache, or
-# in a build/ configured before, everything still builds, only slower.
+# tree maps its own root away) is left out of the key. Without ccache all
+# still builds, only slower; a build/ configured before without it leaves
+# the cache to the nested builds, which then share it among themselves.
 use_compiler_cache() {
   command -v ccache > /dev/null || return 0
   export CMAKE_CXX_COMPILER_LAUNCHER=ccache CCACHE_DIR="$PWD/build/ccache" CCACHE_BASEDIR="$PWD" \
