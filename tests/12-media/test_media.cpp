@@ -298,14 +298,15 @@ void checkTransmittance(const Scene& scene, const std::vector<calls::Transmittan
   const std::vector<float> values = candidate::transmittance(scene, all);
   REQUIRE(values.size() == all.size());
   for (size_t q = 0; q < queries.size(); ++q) {
+    const double t = expected[q];
     MeanEstimate m;
-    int outside = 0;
+    int outside = 0, notZero = 0;
     for (int k = 0; k < kCalls; ++k) {
       const float v = values[q * kCalls + size_t(k)];
       if (!(v >= 0.0f && v <= 1.0f)) ++outside;
+      if (v != 0.0f) ++notZero;
       m.add(std::isfinite(v) ? double(v) : 1e30);
     }
-    const double t = expected[q];
     m.setVarianceCeiling(std::max(t * (1.0 - t), 1e-12));
     const Ray& ray = std::get<0>(queries[q]);
     CAPTURE(what);
@@ -313,6 +314,12 @@ void checkTransmittance(const Scene& scene, const std::vector<calls::Transmittan
                      << ", starting in medium " << std::get<2>(queries[q]));
     INFO(outside << " of " << kCalls << " values outside [0, 1]");
     CHECK(outside == 0);
+    // Past a surface nothing gets through: an estimator that is never
+    // negative and has mean 0 is 0 on every call, whatever its method.
+    if (t == 0.0) {
+      INFO(notZero << " of " << kCalls << " values are not exactly 0 where a surface blocks the ray");
+      CHECK(notZero == 0);
+    }
     INFO(m.describe(t));
     // An exact estimator has no noise to hide in: the rays' offsets at each
     // interface (a few 1e-5 along the ray) shift its value by about 1e-4 of T.

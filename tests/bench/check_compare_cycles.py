@@ -1,6 +1,7 @@
 """Smoke test of tools/compare-cycles (CTest compare-cycles): its comparison
 scene of the roughness sweep makes every conductor white and drops the
-plastic, keeps the environment readable and loads in pathlab; scenes it
+plastic, keeps the environment readable and loads in pathlab; task 12's
+medium cube keeps its medium and interface; scenes it
 cannot translate exactly are refused with a reason; the Blender-side script
 compiles. With `blender` on PATH, a tiny comparison runs end to end (no
 verdict on so few samples); without it, one line says so.
@@ -43,6 +44,16 @@ def main() -> int:
                                     capture_output=True, text=True)
             if render.returncode != 0:
                 failures.append(f"pathlab does not load the comparison scene: {render.stderr.strip()}")
+        # Task 12's scene: the medium and its interface go across unchanged.
+        cube = ROOT / "media/scenes/medium-cube.json"
+        done = subprocess.run([sys.executable, str(TOOL), str(cube), "--scene-only", str(Path(scratch) / "cube.json")],
+                              capture_output=True, text=True)
+        if done.returncode != 0:
+            failures.append(f"--scene-only on the medium cube failed: {done.stderr.strip()}")
+        else:
+            spec, original = json.loads((Path(scratch) / "cube.json").read_text()), json.loads(cube.read_text())
+            if spec.get("media") != original["media"] or spec["materials"] != original["materials"]:
+                failures.append(f"the medium cube's media or interface changed: {spec.get('media')} {spec['materials']}")
         for scene, reason in (("cornell-mirror-glass.json", "type 'mirror'"), ("cornell-spheres.json", "emission")):
             done = subprocess.run([sys.executable, str(TOOL), str(ROOT / "media/scenes" / scene), "--scene-only",
                                    str(Path(scratch) / "refused.json")], capture_output=True, text=True)
@@ -58,7 +69,7 @@ def main() -> int:
             done = subprocess.run([sys.executable, str(TOOL), str(ROOT / "media/scenes/roughness-sweep.json"),
                                    "--pathlab", pathlab, "--spp", "4", "--cycles-spp", "2", "--out", str(Path(scratch) / "run")],
                                   capture_output=True, text=True)
-            if done.returncode != 0 or "largest |z|" not in done.stdout:
+            if done.returncode != 0 or "largest |z|" not in done.stdout or "10x10-pixel blocks" not in done.stdout:
                 failures.append(f"the end-to-end comparison failed: {done.stdout[-500:]} {done.stderr[-500:]}")
     for failure in failures:
         print(f"FAIL: {failure}")

@@ -56,6 +56,11 @@ grep -q "samples/s" <<< "$out" && grep -q "rays/s" <<< "$out" && pass || fail "r
 assert (j["width"], j["height"], j["spp"], j["samples"], j["non_finite_samples"]) == (64, 48, 2, 64 * 48 * 2, 0), j
 assert j["samples_per_second"] > 0 and j["rays"] >= 0 and j["tasks"].startswith("1:"), j' "$work/stats.json" &&
   pass || fail "--stats does not write the render's numbers as JSON"
+# Every scene shipped in media/scenes loads and renders (tiny, 1 spp): a scene nobody ran is a broken handout.
+for scene in "$root"/media/scenes/*.json; do
+  "$pathlab" -q -s 1 -d 16x12 -o "$work/scene.png" "$scene" 2>"$work/scene.err" && [[ -s $work/scene.png ]] \
+    && pass || fail "media/scenes/$(basename "$scene") does not render: $(grep -v '^task [0-9]* not implemented' "$work/scene.err")"
+done
 out=$("$pathlab" -q -s 2 -d 64x48 -o "$work/again.exr" --ref "$work/one.exr" 2>&1)
 grep -q "RMSE" <<< "$out" && grep -q "relMSE" <<< "$out" && pass || fail "--ref does not print RMSE and relMSE: $out"
 out=$("$pathlab" -q -s 1 -d 32x24 --integrator normals -o "$work/normals.png" 2>&1) && pass || fail "normals integrator: $out"
