@@ -325,11 +325,8 @@ def compare(report_path, scene_path, runs):
         mask = labels == value
         entry = {"pixels": int(mask.sum())}
         for name, (first, second) in renders.items():
-            # Two independent renders: the mean of both, and the standard error
-            # of its region mean from their difference (independent pixels).
-            a, b = first[mask], second[mask]
-            entry[name] = {"mean": ((a + b) / 2).mean(axis=0).tolist(),
-                           "stderr": (np.sqrt(((a - b) ** 2).mean(axis=0)) / 2 / math.sqrt(mask.sum())).tolist()}
+            mean, stderr = mean_and_stderr(first[mask], second[mask])
+            entry[name] = {"mean": mean.tolist(), "stderr": stderr.tolist()}
         regions[int(value)] = entry
     json.dump({"width": width, "height": height, "regions": regions, "blocks": block_scores(renders, labels)},
               open(report_path, "w"), indent=1)
@@ -343,6 +340,12 @@ def compare(report_path, scene_path, runs):
             diff = (image - averages["cycles"]) @ np.array([0.2126, 0.7152, 0.0722]) / 0.1
             rows.append(np.stack([np.clip(diff, 0, 1), np.zeros_like(diff), np.clip(-diff, 0, 1)], axis=-1))
     write_png(report_path.rsplit(".", 1)[0] + ".png", np.concatenate(rows, axis=0))
+
+
+def mean_and_stderr(a, b):
+    """Two independent renders' pixels (N x 3): the mean of both, and the
+    standard error of that mean from their difference (independent pixels)."""
+    return ((a + b) / 2).mean(axis=0), np.sqrt(((a - b) ** 2).mean(axis=0)) / 2 / math.sqrt(len(a))
 
 
 def block_scores(renders, labels, size=10):
@@ -361,17 +364,12 @@ def block_scores(renders, labels, size=10):
         zs = []
         for y in range(0, height - size + 1, size):
             for x in range(0, width - size + 1, size):
-                mask = np.zeros_like(keep)
-                mask[y:y + size, x:x + size] = True
-                mask &= keep
-                n = int(mask.sum())
-                if 2 * n < size * size:
+                block = np.s_[y:y + size, x:x + size]
+                mask = keep[block]
+                if 2 * int(mask.sum()) < size * size:
                     continue
-                z = []
-                for a, b in (renders[name], renders["cycles"]):
-                    z.append((((a[mask] + b[mask]) / 2).mean(axis=0),
-                              np.sqrt(((a[mask] - b[mask]) ** 2).mean(axis=0)) / 2 / math.sqrt(n)))
-                (mean_p, se_p), (mean_c, se_c) = z
+                (mean_p, se_p), (mean_c, se_c) = (mean_and_stderr(a[block][mask], b[block][mask])
+                                                  for a, b in ((first, second), renders["cycles"]))
                 zs.extend(((mean_p - mean_c) / np.maximum(np.hypot(se_p, se_c), 1e-12)).tolist())
         zs = np.array(zs)
         scores[name] = {"size": size, "count": int(zs.size), "max_abs_z": float(np.abs(zs).max()) if zs.size else 0.0,
