@@ -5,7 +5,10 @@ framework/tasks/name.h; its reference solutions/NN-name/name.cpp;
 its suite tests/NN-name/. A student release lists the tasks its course
 hands out in tasks/handed-out.txt (tools/make-student-release --tasks); the
 others link the reference and have no suite there."""
+import os
+import random
 import re
+import subprocess
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -73,6 +76,20 @@ def not_handed_out(chosen, root: Path = ROOT):
     return f"task {withheld[0]} is not handed out in this course ({HANDED_OUT_FILE}): it has no suite here"
 
 
+def commit_sample(stage: str, count: int, variable: str, root: Path = ROOT) -> list:
+    """The tasks whose suites a CI stage that samples them checks here: the
+    environment variable `variable` names them ("1,5"), or `count` are drawn
+    by the checked-out commit's hash and the stage's name, so that two stages
+    draw differently on one commit and every task comes up within a few
+    commits (CI's mutation sample draws likewise)."""
+    every = handed_out(root)
+    if os.environ.get(variable):
+        return parse_task_list(os.environ[variable], every, variable)
+    head = subprocess.run(["git", "-C", str(root), "rev-parse", "HEAD"], capture_output=True, text=True)
+    commit = head.stdout.strip() if head.returncode == 0 else "0"
+    return sorted(random.Random(f"{stage}:{commit}").sample(every, min(count, len(every))))
+
+
 # Added to the compiler line of a task file graded as a submission (tools/grade,
 # tools/mutate; tests/CMakeLists.txt's validity candidates likewise): libstdc++'s
 # checks turn an empty std::optional dereferenced or an index past a vector's
@@ -80,7 +97,9 @@ def not_handed_out(chosen, root: Path = ROOT):
 SUBMISSION_FLAGS = ["-D_GLIBCXX_ASSERTIONS"]
 
 
-if __name__ == "__main__":  # for shell scripts: pathlab_tasks.py core | handed-out | check LIST
+USAGE = "usage: pathlab_tasks.py core | handed-out | check LIST | sample STAGE COUNT VARIABLE"
+
+if __name__ == "__main__":  # for shell scripts
     import sys
     if sys.argv[1:] == ["core"]:
         print(core_tasks())
@@ -88,5 +107,7 @@ if __name__ == "__main__":  # for shell scripts: pathlab_tasks.py core | handed-
         print(",".join(map(str, handed_out())))
     elif len(sys.argv) == 3 and sys.argv[1] == "check":
         print(",".join(map(str, parse_task_list(sys.argv[2], tasks()))))
+    elif len(sys.argv) == 5 and sys.argv[1] == "sample" and sys.argv[3].isdigit():  # folders, one per line
+        print("\n".join(tasks()[n][0] for n in commit_sample(sys.argv[2], int(sys.argv[3]), sys.argv[4])))
     else:
-        raise SystemExit("usage: pathlab_tasks.py core | handed-out | check LIST")
+        raise SystemExit(USAGE)

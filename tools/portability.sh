@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# The portability jobs CI runs after the hardening jobs (docs/setup.md,
-# "What is proved where"):
-#   clang-libcxx   Clang with libc++, the macOS toolchain: configure, build
-#                  and test with the clang-libcxx preset (every test but the
-#                  grader's and the write-up's).
+# The portability jobs (docs/setup.md, "What is proved where"); CI runs the
+# aarch64 one after the hardening jobs:
+#   clang-libcxx   Clang with libc++, the macOS toolchain, optimised: configure,
+#                  build and test with the clang-libcxx preset (every test but
+#                  the grader's and the write-up's). Not in CI, whose asan
+#                  stage builds with the same toolchain (tools/hardening.sh).
 #   aarch64        AArch64, Apple Silicon's instruction set: tools/aarch64-check
 #                  --quick (cross-built, 4 suites drawn per commit and the framework tests under
 #                  qemu-user, --accel fast images equal to --accel task3).

@@ -4,9 +4,11 @@
   check_writeup.py BUILD [--screenshots DIR] [--keep DIR]
 
 Makes the write-up three times: the build's own pathlab (the reference in
-the course repository), the untouched stubs (pathlab-stubs) and a mix
-(tests' pathlab-mixed: the reference for tasks 1-3, the stubs for the
-rest). For each:
+the course repository) on four tasks drawn by the commit's hash, as CI's
+other samples draw (PATHLAB_WRITEUP_TASKS=1,5 names them; the whole
+reference page took 270 s of the test stage), the untouched stubs
+(pathlab-stubs) and a mix (tests' pathlab-mixed: the reference for tasks
+1-3, the stubs for the rest) on every task. For each:
 1. The page is valid HTML (tidy: no error, no warning), every <img> has alt
    text and its picture inside the page (a data: URI), nothing is fetched
    from elsewhere; a task not done has its "Not implemented yet" box and no
@@ -38,6 +40,8 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "tools"))
+import pathlab_tasks  # noqa: E402
 PYTHON = "/usr/bin/python3" if Path("/usr/bin/python3").exists() else sys.executable
 
 
@@ -305,7 +309,10 @@ def main() -> int:
     failures = []
     every = {int(p.name[:2]) for p in (ROOT / "tasks").iterdir() if re.fullmatch(r"\d\d-.*", p.name)}
     mixed = build / "tests" / "pathlab-mixed"
-    runs = [("reference", [], every, set()), ("stubs", ["--stubs"], set(), every)]
+    drawn = set(pathlab_tasks.commit_sample("writeup", 4, "PATHLAB_WRITEUP_TASKS"))
+    runs = [("reference", ["--tasks", ",".join(map(str, sorted(drawn)))], drawn, set()),
+            ("stubs", ["--stubs"], set(), every)]
+    print(f"  the reference on tasks {', '.join(map(str, sorted(drawn)))} (PATHLAB_WRITEUP_TASKS to choose)")
     if mixed.exists():
         runs.append(("mixed", ["--program", str(mixed)], {1, 2, 3}, every - {1, 2, 3}))
     if args.only:
