@@ -85,9 +85,16 @@ def commit_sample(stage: str, count: int, variable: str, root: Path = ROOT) -> l
     every = handed_out(root)
     if os.environ.get(variable):
         return parse_task_list(os.environ[variable], every, variable)
+    return sorted(commit_random(stage, root).sample(every, min(count, len(every))))
+
+
+def commit_random(stage: str, root: Path = ROOT) -> random.Random:
+    """A generator seeded by the checked-out commit's hash and a stage's name:
+    every draw CI makes per commit (commit_sample, the grader's attacks'
+    sandboxes, the Gradescope zip's mix) comes from one."""
     head = subprocess.run(["git", "-C", str(root), "rev-parse", "HEAD"], capture_output=True, text=True)
     commit = head.stdout.strip() if head.returncode == 0 else "0"
-    return sorted(random.Random(f"{stage}:{commit}").sample(every, min(count, len(every))))
+    return random.Random(f"{stage}:{commit}")
 
 
 # Added to the compiler line of a task file graded as a submission (tools/grade,

@@ -3,8 +3,9 @@
 
 test_gradescope.py graded submissions with run_autograder in the Gradescope
 layout and kept each one (WORK_DIR/gradescope-results/KIND/, the files as
-handed in) with its results.json (KIND.json): the reference solutions, the
-stubs, five mutants and two alternates. Here the student release is made
+handed in) with its results.json (KIND.json): a half-done submission (the
+reference's files for half the tasks, the stubs for the others), five
+mutants and two alternates. Here the student release is made
 (tools/make-student-release --no-check --worktree: no solutions/, no grader, the
 reference compiled into reference-objects/; the default course, the seven core
 tasks, while the zip grades every task) and, inside it, tools/check
@@ -106,8 +107,8 @@ def main() -> int:
         return prepare()
     failures = []
     kinds = sorted(p.stem for p in graded.glob("*.json"))
-    expected = {"reference", "stubs"}
-    if not expected <= set(kinds) or len(kinds) < 9:
+    expected = {"half-done"}
+    if not expected <= set(kinds) or len(kinds) < 8:
         print(f"FAIL: {graded} holds {kinds}: run gradescope-zip first (test_gradescope.py)")
         return 1
     if not (release / "build-check" / "pathlab-reference.txt").exists():

@@ -7,8 +7,13 @@ packages must be installed), run_autograder is copied to AUTOGRADER_ROOT/,
 and then, for each submission, the student's files are put flat in
 AUTOGRADER_ROOT/submission and run_autograder must write
 AUTOGRADER_ROOT/results/results.json in Gradescope's schema:
-  - the reference solutions (solutions/*/*.cpp, flat): full marks;
-  - the untouched stubs (tasks/*/*.cpp, flat): 0, with every test present;
+  - a half-done submission (flat): the reference's files for half the tasks,
+    task 3 and five drawn afresh for each commit (PATHLAB_ZIP_DONE_TASKS=1,3
+    names them), the untouched stubs for the others: full marks on the
+    first, 0 on the others, every test present and none a build failure.
+    (Each task is graded from the reference or from its stub on a commit,
+    both within a few; the reference's full marks in every suite are
+    grader-reference-full-marks' to check on each.)
   - five mutants and two alternates (SAME_SCORE_FILES: one task file each):
     graded, and kept with their submissions for tests/grader/test_check.py,
     which checks that a student's tools/check gives the same per-test scores.
@@ -195,38 +200,46 @@ def main() -> int:
             failures.append(f"setup.sh's build is not the unpacked tree's ({cache})")
         shutil.copy(autograder / "source/run_autograder", autograder / "run_autograder")  # as Gradescope does
 
-        reference = grade("reference", sorted(root.glob("solutions/*/*.cpp")), env, failures)
-        if reference:
-            points = sum(t["max_score"] for t in reference["tests"])
-            if points <= 0 or reference["score"] != points:
-                lost = [t["name"] for t in reference["tests"] if t["score"] != t["max_score"]]
-                failures.append(f"reference: scored {reference['score']:g} of {points:g} (lost: {lost[:3]})")
-            tasks = {t["name"].split(":")[0] for t in reference["tests"]}
-            if tasks != {f"Task {n}" for n in ALL_TASKS}:
-                failures.append(f"reference: the tests cover {sorted(tasks)}, not tasks {ALL_TASKS}")
-        stubs = grade("stubs", sorted(root.glob("tasks/*/*.cpp")), env, failures)
-        if stubs:
-            if stubs["score"] != 0 or any(t["score"] != 0 for t in stubs["tests"]):
-                failures.append(f"stubs: scored {stubs['score']:g}, expected 0")
-            if reference:
-                shape = lambda r: [(t["name"], t["max_score"]) for t in r["tests"]]
-                missing = sorted(set(shape(reference)) - set(shape(stubs)))
-                extra = sorted(set(shape(stubs)) - set(shape(reference)))
-                if missing or extra:
-                    failures.append(f"stubs: not every test present (missing {missing[:3]}, extra {extra[:3]})")
-            compiled = [t["name"] for t in stubs["tests"] if "did not compile" in t["output"]
+        # Task 3 always done: the leaderboard below needs its tree.
+        if os.environ.get("PATHLAB_ZIP_DONE_TASKS"):
+            done = set(pathlab_tasks.parse_task_list(os.environ["PATHLAB_ZIP_DONE_TASKS"], ALL_TASKS,
+                                                     "PATHLAB_ZIP_DONE_TASKS"))
+        else:
+            others = [n for n in ALL_TASKS if n != 3]
+            done = {3, *pathlab_tasks.commit_random("gradescope-zip", root).sample(others, len(others) // 2)}
+        folders = pathlab_tasks.tasks(root)
+        sources = sorted(path for n in ALL_TASKS
+                         for path in (root / ("solutions" if n in done else "tasks") / folders[n][0]).glob("*.cpp"))
+        print(f"half-done: the reference's tasks {sorted(done)}, the stubs' {sorted(set(ALL_TASKS) - done)}")
+        half_done = grade("half-done", sources, env, failures)
+        if half_done:
+            task_of = lambda test: int(test["name"].split(":")[0].split()[1])  # "Task 3: ..."
+            wrong = [t["name"] for t in half_done["tests"]
+                     if t["score"] != (t["max_score"] if task_of(t) in done else 0)]
+            if wrong:
+                failures.append(f"half-done: not full marks on the reference's tasks {sorted(done)} and 0 on "
+                                f"the stubs' (wrong: {wrong[:3]})")
+            tasks = {task_of(t) for t in half_done["tests"]}
+            if tasks != set(ALL_TASKS):
+                failures.append(f"half-done: the tests cover {sorted(tasks)}, not tasks {ALL_TASKS}")
+            compiled = [t["name"] for t in half_done["tests"] if "did not compile" in t["output"]
                         or "did not link" in t["output"]]
             if compiled:
-                failures.append(f"stubs: {len(compiled)} tests report a build failure, e.g. {compiled[0]}")
+                failures.append(f"half-done: {len(compiled)} tests report a build failure, e.g. {compiled[0]}")
 
         boards = {}
         for path in SAME_SCORE_FILES:
             kind = Path(path).parent.parent.name + "-" + Path(path).stem  # e.g. mutants-half-pixel-offset
             report = grade(kind, [root / path], env, failures)  # its score is the validity matrix's to judge
+            if report and half_done:  # every test present, whatever the submission holds
+                shape = lambda r: sorted((t["name"], t["max_score"]) for t in r["tests"])
+                if shape(report) != shape(half_done):
+                    failures.append(f"{kind}: not the tests of the half-done submission "
+                                    f"({len(report['tests'])} against {len(half_done['tests'])})")
             boards[kind] = {e["name"]: e["value"] for e in (report or {}).get("leaderboard", [])}
-        # The ungraded leaderboard (task 3's tree, measured by the judge): the reference's tree, a
+        # The ungraded leaderboard (task 3's tree, measured by the judge): the reference's tree (task 3 of the half-done), a
         # correct builder with other bins close to it, a median split far worse; no entry without task 3.
-        boards["reference"] = {e["name"]: e["value"] for e in (reference or {}).get("leaderboard", [])}
+        boards["reference"] = {e["name"]: e["value"] for e in (half_done or {}).get("leaderboard", [])}
         tree = "BVH cost per ray: nodes + 10 x triangle tests (scan-like mesh)"
         ref_value = boards["reference"].get(tree)
         print(f"leaderboard ({tree}): " + ", ".join(f"{k} {v.get(tree, '-')}" for k, v in boards.items()))
