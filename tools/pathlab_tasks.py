@@ -104,7 +104,7 @@ def commit_random(stage: str, root: Path = ROOT) -> random.Random:
 SUBMISSION_FLAGS = ["-D_GLIBCXX_ASSERTIONS"]
 
 
-USAGE = "usage: pathlab_tasks.py core | handed-out | check LIST | sample STAGE COUNT VARIABLE"
+USAGE = "usage: pathlab_tasks.py core | handed-out | check LIST | sample STAGE COUNT VARIABLE [--numbers | --others]"
 
 if __name__ == "__main__":  # for shell scripts
     import sys
@@ -114,7 +114,16 @@ if __name__ == "__main__":  # for shell scripts
         print(",".join(map(str, handed_out())))
     elif len(sys.argv) == 3 and sys.argv[1] == "check":
         print(",".join(map(str, parse_task_list(sys.argv[2], tasks()))))
-    elif len(sys.argv) == 5 and sys.argv[1] == "sample" and sys.argv[3].isdigit():  # folders, one per line
-        print("\n".join(tasks()[n][0] for n in commit_sample(sys.argv[2], int(sys.argv[3]), sys.argv[4])))
+    elif len(sys.argv) in (5, 6) and sys.argv[1] == "sample" and sys.argv[3].isdigit():
+        drawn = commit_sample(sys.argv[2], int(sys.argv[3]), sys.argv[4])
+        form = sys.argv[5] if len(sys.argv) == 6 else "folders"
+        if form == "--numbers":  # "4;5;8;12", a CMake list
+            print(";".join(map(str, drawn)))
+        elif form in ("folders", "--others"):  # the drawn tasks' folders (or the others'), one per line
+            for n, (folder, _) in tasks().items():
+                if (n in drawn) == (form == "folders"):
+                    print(folder)
+        else:
+            raise SystemExit(USAGE)
     else:
         raise SystemExit(USAGE)

@@ -6,7 +6,7 @@
 #                  the grader's and the write-up's). Not in CI, whose asan
 #                  stage builds with the same toolchain (tools/hardening.sh).
 #   aarch64        AArch64, Apple Silicon's instruction set: tools/aarch64-check
-#                  --quick (cross-built, 4 suites drawn per commit and the framework tests under
+#                  --quick (cross-built, 3 suites drawn per commit and the framework tests under
 #                  qemu-user, --accel fast images equal to --accel task3).
 # The Windows check (tools/windows-check) is not part of CI: see docs/setup.md.
 #   tools/portability.sh [clang-libcxx] [aarch64]     (no job named: both)
