@@ -237,8 +237,9 @@ def main() -> int:
                     failures.append(f"{kind}: not the tests of the half-done submission "
                                     f"({len(report['tests'])} against {len(half_done['tests'])})")
             boards[kind] = {e["name"]: e["value"] for e in (report or {}).get("leaderboard", [])}
-        # The ungraded leaderboard (task 3's tree, measured by the judge): the reference's tree (task 3 of the half-done), a
-        # correct builder with other bins close to it, a median split far worse; no entry without task 3.
+        # The ungraded leaderboard (task 3's tree, measured by the judge): the reference's tree (task 3
+        # of the half-done), a correct builder with other bins close to it, a median split far worse; no
+        # entry without task 3.
         boards["reference"] = {e["name"]: e["value"] for e in (half_done or {}).get("leaderboard", [])}
         tree = "BVH cost per ray: nodes + 10 x triangle tests (scan-like mesh)"
         ref_value = boards["reference"].get(tree)
