@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The hardening jobs CI runs after the test suite (docs/reliability.md):
 #   asan   ASan + UBSan under Clang with libc++ (the macOS toolchain): every
-#          test except the grader's own rebuilds, the write-up and the
-#          validity matrix (same code as the suites, 65 more builds), with
+#          test except the grader's own rebuilds, the write-up, the docs
+#          checks and the validity matrix (same code as the suites), with
 #          three task suites drawn per commit (PATHLAB_ASAN_TASKS=1,5 names
 #          them); the other suites' sources are compiled with -fsyntax-only.
 #   tsan   TSan: the multithreaded render loop (framework tests), the CLI, the

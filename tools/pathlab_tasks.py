@@ -104,7 +104,8 @@ def commit_random(stage: str, root: Path = ROOT) -> random.Random:
 SUBMISSION_FLAGS = ["-D_GLIBCXX_ASSERTIONS"]
 
 
-USAGE = "usage: pathlab_tasks.py core | handed-out | check LIST | sample STAGE COUNT VARIABLE [--numbers | --others]"
+USAGE = ("usage: pathlab_tasks.py core | handed-out | check LIST | sample STAGE COUNT VARIABLE [--numbers | --others]"
+         " | draw STAGE COUNT < LINES")
 
 if __name__ == "__main__":  # for shell scripts
     import sys
@@ -125,5 +126,10 @@ if __name__ == "__main__":  # for shell scripts
                     print(folder)
         else:
             raise SystemExit(USAGE)
+    elif len(sys.argv) == 4 and sys.argv[1] == "draw" and sys.argv[3].isdigit():
+        # COUNT of the lines on standard input drawn by the commit (all if fewer), in their order.
+        lines = sys.stdin.read().splitlines()
+        drawn = set(commit_random(sys.argv[2]).sample(range(len(lines)), min(int(sys.argv[3]), len(lines))))
+        print("\n".join(line for i, line in enumerate(lines) if i in drawn))
     else:
         raise SystemExit(USAGE)
