@@ -63,6 +63,9 @@ size_t maxFileNameBytes();
 
 // This process's id: names a scratch folder no other process shares.
 long currentProcessId();
+// CPU seconds the calling thread has run: times one thread's work without
+// counting the moments a busy machine gave its core to another process.
+double currentThreadCpuSeconds();
 // The running program's own file, as an absolute path ("" if the system will
 // not say): finds the files built beside it.
 std::string currentExecutablePath();

@@ -19,6 +19,7 @@
 #include <climits>
 #include <csignal>
 #include <cstring>
+#include <ctime>
 #include <vector>
 
 extern char** environ;  // the process's environment, for the programs it starts (POSIX)
@@ -137,6 +138,12 @@ bool folderIsWritable(const std::string& path) { return ::access(path.c_str(), W
 size_t maxFileNameBytes() { return NAME_MAX; }
 
 long currentProcessId() { return long(::getpid()); }
+
+double currentThreadCpuSeconds() {
+  timespec now{};
+  ::clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
+}
 
 std::string currentExecutablePath() {
 #if defined(__APPLE__)

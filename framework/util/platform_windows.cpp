@@ -171,6 +171,13 @@ size_t maxFileNameBytes() { return 255; }
 
 long currentProcessId() { return long(GetCurrentProcessId()); }
 
+double currentThreadCpuSeconds() {
+  FILETIME created, exited, kernel, user;
+  if (!GetThreadTimes(GetCurrentThread(), &created, &exited, &kernel, &user)) return 0.0;
+  auto ticks = [](const FILETIME& t) { return (uint64_t(t.dwHighDateTime) << 32) | t.dwLowDateTime; };
+  return 1e-7 * double(ticks(kernel) + ticks(user));  // 100-nanosecond ticks
+}
+
 std::string currentExecutablePath() {
   std::wstring path(MAX_PATH, L'\0');
   for (;;) {

@@ -238,6 +238,8 @@ with tempfile.TemporaryDirectory(prefix="pathlab-bench-render-") as tmp:
             result = json.loads(out.stdout.strip().splitlines()[-1])
             check(result.get("scene") == scene_path and result.get("spp") == 2 and result.get("sampler") == sampler,
                   f"render: the JSON does not describe the run: {result}")
+            # The replayed rays are part of the paths' own work, so the share is below 1 (timed in the
+            # thread's CPU seconds: a busy machine does not tip it over, as wall time did in CI).
             share = result.get("ray_query_share", -1)
             check(0.0 < share < 1.0, f"render: ray-query share {share} is not a fraction")
             check(re.search(r"^ray queries .*: \d+ % of the time", out.stdout, re.M) is not None,
@@ -245,7 +247,8 @@ with tempfile.TemporaryDirectory(prefix="pathlab-bench-render-") as tmp:
             # With Embree built in, the same rays through it: a share, and the same answers (a wrong
             # primitive numbering, or spheres left out, would disagree on most rays of this scene).
             if result.get("embree_query_share") is not None:
-                check(0.0 < result["embree_query_share"] < 1.0 and result.get("embree_agreement", 0) > 0.99,
+                # Embree's walk is not part of the paths' work: its share may pass 1 on some scene.
+                check(0.0 < result["embree_query_share"] < math.inf and result.get("embree_agreement", 0) > 0.99,
                       f"render: Embree's share {result['embree_query_share']} or agreement "
                       f"{result.get('embree_agreement')} is off")
                 check("through Intel Embree" in out.stdout, "render: no line with Embree's share")
