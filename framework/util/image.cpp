@@ -35,7 +35,8 @@ std::string oneLine(std::string text) {
 // libpng also prints its own "libpng error: ..." line straight to stderr for
 // a corrupt PNG (found by fuzzing). stderr points at /dev/null while
 // OpenImageIO reads; reads are serialised because fd 2 is process-wide.
-// Fuzz builds keep stderr, so a crash report from inside a read is seen.
+// A sanitizer's report goes to the real stderr meanwhile (silenceStderr);
+// fuzz builds keep stderr whole, for libFuzzer's own lines after a crash.
 class QuietStderr {
  public:
   QuietStderr() : lock_(mutex()) {

@@ -14,6 +14,9 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#if defined(PATHLAB_SANITIZED)
+#include <sanitizer/common_interface_defs.h>
+#endif
 
 #include <cerrno>
 #include <climits>
@@ -206,6 +209,11 @@ bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) == 1; }
 int silenceStderr() {
   const int saved = ::dup(STDERR_FILENO);
   const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+#if defined(PATHLAB_SANITIZED)
+  // A sanitizer's report raised meanwhile (a bad read, another thread's
+  // race) goes to the real stderr, not with the library's chatter.
+  if (saved >= 0) __sanitizer_set_report_fd(reinterpret_cast<void*>(intptr_t(saved)));
+#endif
   if (saved >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
   if (null >= 0) ::close(null);
   return saved;
@@ -214,6 +222,9 @@ int silenceStderr() {
 void restoreStderr(int token) {
   if (token < 0) return;
   ::dup2(token, STDERR_FILENO);
+#if defined(PATHLAB_SANITIZED)
+  __sanitizer_set_report_fd(reinterpret_cast<void*>(intptr_t(STDERR_FILENO)));
+#endif
   ::close(token);
 }
 
