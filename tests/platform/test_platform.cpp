@@ -6,8 +6,10 @@
 // Wine (platform_windows.cpp). Plain main(), so that build needs nothing
 // but the compiler. Run from a scratch folder: it writes there.
 #include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "util/error.h"
@@ -129,6 +131,23 @@ void run() {
 #endif
   restoreStderr(saved);
   std::fprintf(stderr, "stderr restored\n");
+
+  // The thread's CPU clock runs while it computes and stands still while it sleeps
+  // (pathlab-bench times its ray-query share with it on a busy machine).
+  const auto wallStart = std::chrono::steady_clock::now();
+  const double cpuStart = currentThreadCpuSeconds();
+  volatile double spin = 0.0;
+  auto wallSeconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count(); };
+  while (currentThreadCpuSeconds() - cpuStart < 0.05 && wallSeconds() < 10.0) {
+    for (int i = 0; i < 100000; ++i) spin = spin + 1.0;
+  }
+  const double computed = currentThreadCpuSeconds() - cpuStart;
+  expect(computed >= 0.05 && computed < 10.0,
+         "the thread's CPU clock runs while it computes: " + std::to_string(computed) + " s");
+  const double beforeSleep = currentThreadCpuSeconds();
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  const double slept = currentThreadCpuSeconds() - beforeSleep;
+  expect(slept >= 0.0 && slept < 0.1, "and stands still while it sleeps 0.2 s: " + std::to_string(slept) + " s");
 
   std::atomic<int> pixels{0};
   forEachPixel(37, 11, 4, [&](int, int) { pixels.fetch_add(1); });
