@@ -8,7 +8,7 @@
 #   tsan   TSan: the multithreaded render loop (framework tests), the CLI, the
 #          GUI's background workers, and the grader on task 5 (with the same
 #          TSan build).
-#   fuzz   libFuzzer: each of the four targets for RUNS executions (default
+#   fuzz   libFuzzer: each of the five targets for RUNS executions (default
 #          2000), with the seed fixed at 1 so the job is repeatable.
 # Installs clang and its sanitizer runtime if missing (Debian packages).
 #   tools/hardening.sh [RUNS] [asan] [tsan] [fuzz]     (no job named: all three)

@@ -7,9 +7,9 @@
 #include "tasks/camera_rays.h"
 
 namespace pathlab::calls {
-PATHLAB_REMOTE_CALL(PixelSamplePosition, 1, Point2(IVec2, Vec2));
-PATHLAB_REMOTE_CALL(CameraBasisOf, 2, CameraBasis(Camera));
-PATHLAB_REMOTE_CALL(GenerateCameraRay, 3, Ray(Camera, CameraBasis, Point2, IVec2));
+PATHLAB_REMOTE_CALL(PixelSamplePosition, 1, shape::Fixed, Point2(IVec2, Vec2));
+PATHLAB_REMOTE_CALL(CameraBasisOf, 2, shape::Fixed, CameraBasis(Camera));
+PATHLAB_REMOTE_CALL(GenerateCameraRay, 3, shape::Fixed, Ray(Camera, CameraBasis, Point2, IVec2));
 }  // namespace pathlab::calls
 
 namespace pathlab::candidate {

@@ -8,14 +8,16 @@
 #include "tasks/intersection.h"
 
 namespace pathlab::calls {
-PATHLAB_REMOTE_CALL(IntersectTriangle, 1, std::optional<TriangleHit>(Ray, Interval, Point3, Point3, Point3));
-PATHLAB_REMOTE_CALL(IntersectSphere, 2, std::optional<float>(Ray, Interval, Point3, float));
+PATHLAB_REMOTE_CALL(IntersectTriangle, 1, shape::Fixed, std::optional<TriangleHit>(Ray, Interval, Point3, Point3, Point3));
+PATHLAB_REMOTE_CALL(IntersectSphere, 2, shape::Fixed, std::optional<float>(Ray, Interval, Point3, float));
 // normals: empty, or the three vertex normals.
-PATHLAB_REMOTE_CALL(TriangleSurfacePoint, 3, SurfacePoint(TriangleHit, Point3, Point3, Point3, std::vector<Vec3>));
-PATHLAB_REMOTE_CALL(SphereSurfacePoint, 4, SurfacePoint(Ray, float, Point3, float));
+PATHLAB_REMOTE_CALL(TriangleSurfacePoint, 3, shape::Fixed, SurfacePoint(TriangleHit, Point3, Point3, Point3, std::vector<Vec3>));
+PATHLAB_REMOTE_CALL(SphereSurfacePoint, 4, shape::Fixed, SurfacePoint(Ray, float, Point3, float));
 // For each ray, the t of every triangle of a mesh it hits (intersectTriangle
 // on each triangle, in the candidate: a closed mesh has thousands).
-PATHLAB_REMOTE_CALL(MeshHits, 5,
+// Per ray, at most one hit per triangle.
+using HitsPerRay = shape::OnePer<2, shape::AtMost<shape::LengthOf<1>>>;
+PATHLAB_REMOTE_CALL(MeshHits, 5, HitsPerRay,
                     std::vector<std::vector<float>>(std::vector<Point3>, std::vector<glm::uvec3>, std::vector<Ray>));
 }  // namespace pathlab::calls
 

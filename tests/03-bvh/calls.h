@@ -14,13 +14,45 @@ namespace pathlab::calls {
 using RayInRange = std::tuple<Ray, Interval>;
 using ClosestResult = std::tuple<std::optional<PrimitiveHit>, TraversalStats>;
 using AnyResult = std::tuple<bool, TraversalStats>;
-PATHLAB_REMOTE_CALL(IntersectBox, 1, std::optional<float>(Aabb, Ray, Vec3, Interval));
-PATHLAB_REMOTE_CALL(BuildBvh, 2, Bvh(std::vector<Aabb>));
-PATHLAB_REMOTE_CALL(IntersectClosest, 3, std::vector<ClosestResult>(Bvh, Scene, std::vector<RayInRange>));
-PATHLAB_REMOTE_CALL(IntersectAny, 4, std::vector<AnyResult>(Bvh, Scene, std::vector<RayInRange>));
+
+// A tree over n boxes: `primitives` lists n slots (validateBvh checks that
+// each box is in one), and a binary tree whose leaves hold at least one box
+// has at most 2 n - 1 nodes (a few more: a builder may leave slots unused,
+// as Bikker's leaves node 1).
+struct BvhShape {
+  using Args = std::tuple<std::vector<Aabb>>;
+  static size_t mostNodes(const Args& args) { return 2 * std::get<0>(args).size() + 2; }
+  static uint64_t maxBytes(shape::Of<Bvh>, const Args& args) {
+    return 16 + mostNodes(args) * wire::maxWireSize<BvhNode>() + std::get<0>(args).size() * sizeof(uint32_t);
+  }
+  static void read(wire::Reader& r, Bvh& bvh, const Args& args) {
+    const size_t nodes = r.count(wire::minWireSize<BvhNode>());
+    if (nodes > mostNodes(args)) {
+      throw wire::WireError("a tree of " + std::to_string(nodes) + " nodes over " +
+                            std::to_string(std::get<0>(args).size()) + " boxes (at most 2 n + 2)");
+    }
+    wire::readElements(r, bvh.nodes, nodes);
+    r.expectCount(std::get<0>(args).size(), "the tree's primitives (one slot per box)");
+    wire::readElements(r, bvh.primitives, std::get<0>(args).size());
+  }
+};
+// The slots of the tree a ray's traversal tested: each below the tree's
+// slot count, each at most twice per ray.
+using TraversalArgs = std::tuple<Bvh, Scene, std::vector<RayInRange>, bool>;
+struct Slots {
+  static size_t of(const TraversalArgs& args) { return std::get<0>(args).primitives.size(); }
+};
+struct SlotTests {
+  static size_t of(const TraversalArgs& args) { return 2 * Slots::of(args); }
+};
+PATHLAB_REMOTE_CALL(IntersectBox, 1, shape::Fixed, std::optional<float>(Aabb, Ray, Vec3, Interval));
+PATHLAB_REMOTE_CALL(BuildBvh, 2, BvhShape, Bvh(std::vector<Aabb>));
+PATHLAB_REMOTE_CALL(IntersectClosest, 3, shape::OnePer<2>, std::vector<ClosestResult>(Bvh, Scene, std::vector<RayInRange>));
+PATHLAB_REMOTE_CALL(IntersectAny, 4, shape::OnePer<2>, std::vector<AnyResult>(Bvh, Scene, std::vector<RayInRange>));
 // The slots each ray's traversal tested, as the leaf geometry records them
 // (the framework's log, not the candidate's own count): closest hit, or any hit.
-PATHLAB_REMOTE_CALL(TestedSlots, 5, std::vector<std::vector<uint32_t>>(Bvh, Scene, std::vector<RayInRange>, bool));
+using SlotsPerRay = shape::OnePer<2, shape::AtMost<SlotTests, shape::IndexBelow<Slots>>>;
+PATHLAB_REMOTE_CALL(TestedSlots, 5, SlotsPerRay, std::vector<std::vector<uint32_t>>(Bvh, Scene, std::vector<RayInRange>, bool));
 }  // namespace pathlab::calls
 
 namespace pathlab::candidate {

@@ -8,9 +8,9 @@
 #include "tasks/direct_lighting.h"
 
 namespace pathlab::calls {
-PATHLAB_REMOTE_CALL(LambertianBrdf, 1, Color(Color));
-PATHLAB_REMOTE_CALL(OffsetRayOrigin, 2, Point3(Point3, Vec3, Vec3));
-PATHLAB_REMOTE_CALL(LightDirectionTo, 3, std::optional<LightDirection>(Point3, AreaSample));
+PATHLAB_REMOTE_CALL(LambertianBrdf, 1, shape::Fixed, Color(Color));
+PATHLAB_REMOTE_CALL(OffsetRayOrigin, 2, shape::Fixed, Point3(Point3, Vec3, Vec3));
+PATHLAB_REMOTE_CALL(LightDirectionTo, 3, shape::Fixed, std::optional<LightDirection>(Point3, AreaSample));
 }  // namespace pathlab::calls
 
 namespace pathlab::candidate {

@@ -10,8 +10,8 @@
 #include "tasks/path_tracing.h"
 
 namespace pathlab::calls {
-PATHLAB_REMOTE_CALL(SampleDiffuseDirection, 1, Vec3(Vec2));
-PATHLAB_REMOTE_CALL(DiffuseDirectionPdf, 2, float(Vec3));
+PATHLAB_REMOTE_CALL(SampleDiffuseDirection, 1, shape::Fixed, Vec3(Vec2));
+PATHLAB_REMOTE_CALL(DiffuseDirectionPdf, 2, shape::Fixed, float(Vec3));
 }  // namespace pathlab::calls
 
 namespace pathlab::candidate {

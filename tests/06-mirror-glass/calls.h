@@ -10,11 +10,11 @@
 #include "tasks/mirror_glass.h"
 
 namespace pathlab::calls {
-PATHLAB_REMOTE_CALL(Reflect, 1, Vec3(Vec3));
-PATHLAB_REMOTE_CALL(Refract, 2, std::optional<Vec3>(Vec3, float));
-PATHLAB_REMOTE_CALL(SchlickFresnel, 3, float(float, float));
-PATHLAB_REMOTE_CALL(SampleMirror, 4, BsdfSample(Vec3, Color));
-PATHLAB_REMOTE_CALL(SampleGlass, 5, BsdfSample(Vec3, Color, Color, float, float));
+PATHLAB_REMOTE_CALL(Reflect, 1, shape::Fixed, Vec3(Vec3));
+PATHLAB_REMOTE_CALL(Refract, 2, shape::Fixed, std::optional<Vec3>(Vec3, float));
+PATHLAB_REMOTE_CALL(SchlickFresnel, 3, shape::Fixed, float(float, float));
+PATHLAB_REMOTE_CALL(SampleMirror, 4, shape::Fixed, BsdfSample(Vec3, Color));
+PATHLAB_REMOTE_CALL(SampleGlass, 5, shape::Fixed, BsdfSample(Vec3, Color, Color, float, float));
 }  // namespace pathlab::calls
 
 namespace pathlab::candidate {

@@ -11,22 +11,22 @@
 #include "tasks/microfacet.h"
 
 namespace pathlab::calls {
-PATHLAB_REMOTE_CALL(AlphaFromRoughness, 1, float(float));
-PATHLAB_REMOTE_CALL(GgxD, 2, float(Vec3, float));
-PATHLAB_REMOTE_CALL(SmithLambda, 3, float(Vec3, float));
-PATHLAB_REMOTE_CALL(SmithG1, 4, float(Vec3, Vec3, float));
-PATHLAB_REMOTE_CALL(SmithG2, 5, float(Vec3, Vec3, Vec3, float));
-PATHLAB_REMOTE_CALL(SchlickFresnelF0, 6, Color(float, Color));
-PATHLAB_REMOTE_CALL(ConductorFresnel, 7, Color(float, Color, Color));
-PATHLAB_REMOTE_CALL(ConductorBrdf, 8, Color(Vec3, Vec3, RoughConductor));
-PATHLAB_REMOTE_CALL(SampleGgxNormal, 9, Vec3(Vec2, float));
-PATHLAB_REMOTE_CALL(SampleVisibleNormal, 10, Vec3(Vec3, Vec2, float));
-PATHLAB_REMOTE_CALL(VisibleNormalPdf, 11, float(Vec3, Vec3, float));
-PATHLAB_REMOTE_CALL(SampleConductor, 12, std::optional<BsdfSample>(Vec3, Vec2, RoughConductor));
-PATHLAB_REMOTE_CALL(ConductorPdf, 13, float(Vec3, Vec3, RoughConductor));
-PATHLAB_REMOTE_CALL(PlasticBrdf, 14, Color(Vec3, Vec3, RoughPlastic));
-PATHLAB_REMOTE_CALL(SamplePlastic, 15, std::optional<BsdfSample>(Vec3, Vec2, RoughPlastic));
-PATHLAB_REMOTE_CALL(PlasticPdf, 16, float(Vec3, Vec3, RoughPlastic));
+PATHLAB_REMOTE_CALL(AlphaFromRoughness, 1, shape::Fixed, float(float));
+PATHLAB_REMOTE_CALL(GgxD, 2, shape::Fixed, float(Vec3, float));
+PATHLAB_REMOTE_CALL(SmithLambda, 3, shape::Fixed, float(Vec3, float));
+PATHLAB_REMOTE_CALL(SmithG1, 4, shape::Fixed, float(Vec3, Vec3, float));
+PATHLAB_REMOTE_CALL(SmithG2, 5, shape::Fixed, float(Vec3, Vec3, Vec3, float));
+PATHLAB_REMOTE_CALL(SchlickFresnelF0, 6, shape::Fixed, Color(float, Color));
+PATHLAB_REMOTE_CALL(ConductorFresnel, 7, shape::Fixed, Color(float, Color, Color));
+PATHLAB_REMOTE_CALL(ConductorBrdf, 8, shape::Fixed, Color(Vec3, Vec3, RoughConductor));
+PATHLAB_REMOTE_CALL(SampleGgxNormal, 9, shape::Fixed, Vec3(Vec2, float));
+PATHLAB_REMOTE_CALL(SampleVisibleNormal, 10, shape::Fixed, Vec3(Vec3, Vec2, float));
+PATHLAB_REMOTE_CALL(VisibleNormalPdf, 11, shape::Fixed, float(Vec3, Vec3, float));
+PATHLAB_REMOTE_CALL(SampleConductor, 12, shape::Fixed, std::optional<BsdfSample>(Vec3, Vec2, RoughConductor));
+PATHLAB_REMOTE_CALL(ConductorPdf, 13, shape::Fixed, float(Vec3, Vec3, RoughConductor));
+PATHLAB_REMOTE_CALL(PlasticBrdf, 14, shape::Fixed, Color(Vec3, Vec3, RoughPlastic));
+PATHLAB_REMOTE_CALL(SamplePlastic, 15, shape::Fixed, std::optional<BsdfSample>(Vec3, Vec2, RoughPlastic));
+PATHLAB_REMOTE_CALL(PlasticPdf, 16, shape::Fixed, float(Vec3, Vec3, RoughPlastic));
 }  // namespace pathlab::calls
 
 namespace pathlab::candidate {

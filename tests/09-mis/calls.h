@@ -16,11 +16,11 @@ namespace pathlab::calls {
 // A direction from a point: oneLightPdf's question (the candidate finds what the ray hits).
 using PdfQuery = std::tuple<Point3 /*from*/, Vec3 /*wi*/>;
 
-PATHLAB_REMOTE_CALL(BalanceHeuristic, 1, float(float, float));
-PATHLAB_REMOTE_CALL(PowerHeuristic, 2, float(float, float));
-PATHLAB_REMOTE_CALL(SampleOneLight, 3, std::vector<std::optional<LightSample>>(Scene, Point3, std::vector<Vec3>));
-PATHLAB_REMOTE_CALL(OneLightPdf, 4, std::vector<float>(Scene, std::vector<PdfQuery>));
-PATHLAB_REMOTE_CALL(TracePathsMis, 5, std::vector<Color>(Scene, TraceSettings, MisEstimator, std::vector<PathQuery>));
+PATHLAB_REMOTE_CALL(BalanceHeuristic, 1, shape::Fixed, float(float, float));
+PATHLAB_REMOTE_CALL(PowerHeuristic, 2, shape::Fixed, float(float, float));
+PATHLAB_REMOTE_CALL(SampleOneLight, 3, shape::OnePer<2>, std::vector<std::optional<LightSample>>(Scene, Point3, std::vector<Vec3>));
+PATHLAB_REMOTE_CALL(OneLightPdf, 4, shape::OnePer<1>, std::vector<float>(Scene, std::vector<PdfQuery>));
+PATHLAB_REMOTE_CALL(TracePathsMis, 5, shape::OnePer<3>, std::vector<Color>(Scene, TraceSettings, MisEstimator, std::vector<PathQuery>));
 }  // namespace pathlab::calls
 
 namespace pathlab::wire {

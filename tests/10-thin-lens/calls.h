@@ -12,8 +12,8 @@ namespace pathlab::calls {
 // One lens ray's question: the pinhole ray through a film point, and the lens's random numbers.
 using LensQuery = std::tuple<Ray /*pinhole*/, Vec2 /*uLens*/>;
 
-PATHLAB_REMOTE_CALL(SampleUnitDisk, 1, std::vector<Point2>(std::vector<Vec2>));
-PATHLAB_REMOTE_CALL(GenerateThinLensRays, 2, std::vector<Ray>(Camera, CameraBasis, std::vector<LensQuery>));
+PATHLAB_REMOTE_CALL(SampleUnitDisk, 1, shape::OnePer<0>, std::vector<Point2>(std::vector<Vec2>));
+PATHLAB_REMOTE_CALL(GenerateThinLensRays, 2, shape::OnePer<2>, std::vector<Ray>(Camera, CameraBasis, std::vector<LensQuery>));
 }  // namespace pathlab::calls
 
 namespace pathlab::candidate {

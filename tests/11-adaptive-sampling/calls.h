@@ -21,10 +21,10 @@ struct SampledPixel {
   bool overran = false;  // asked for far more samples than the maximum
 };
 
-PATHLAB_REMOTE_CALL(AddSamples, 1, std::vector<Accumulated>(std::vector<std::vector<double>>));
-PATHLAB_REMOTE_CALL(SampleVariances, 2, std::vector<double>(std::vector<RunningStatistics>));
-PATHLAB_REMOTE_CALL(ConfidentEnough, 3, std::vector<uint8_t>(std::vector<RunningStatistics>, AdaptiveSettings));
-PATHLAB_REMOTE_CALL(SamplePixels, 4, std::vector<SampledPixel>(std::vector<std::vector<Color>>, AdaptiveSettings));
+PATHLAB_REMOTE_CALL(AddSamples, 1, shape::OnePer<0>, std::vector<Accumulated>(std::vector<std::vector<double>>));
+PATHLAB_REMOTE_CALL(SampleVariances, 2, shape::OnePer<0>, std::vector<double>(std::vector<RunningStatistics>));
+PATHLAB_REMOTE_CALL(ConfidentEnough, 3, shape::OnePer<0>, std::vector<uint8_t>(std::vector<RunningStatistics>, AdaptiveSettings));
+PATHLAB_REMOTE_CALL(SamplePixels, 4, shape::OnePer<0>, std::vector<SampledPixel>(std::vector<std::vector<Color>>, AdaptiveSettings));
 }  // namespace pathlab::calls
 
 namespace pathlab::wire {

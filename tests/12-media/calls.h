@@ -33,12 +33,12 @@ struct VertexQuery {
   uint64_t seed = 0;
 };
 
-PATHLAB_REMOTE_CALL(SampleFreeFlight, 1, std::vector<FreeFlight>(std::vector<FlightQuery>));
-PATHLAB_REMOTE_CALL(HenyeyGreenstein, 2, std::vector<float>(std::vector<PhaseQuery>));
-PATHLAB_REMOTE_CALL(SampleHenyeyGreenstein, 3, std::vector<Vec3>(std::vector<PhaseSampleQuery>));
-PATHLAB_REMOTE_CALL(Transmittance, 4, std::vector<float>(Scene, std::vector<TransmittanceQuery>));
-PATHLAB_REMOTE_CALL(DirectLightingInMedia, 5, std::vector<Color>(Scene, TraceSettings, std::vector<VertexQuery>));
-PATHLAB_REMOTE_CALL(TracePathsInMedia, 6, std::vector<Color>(Scene, TraceSettings, std::vector<PathQuery>));
+PATHLAB_REMOTE_CALL(SampleFreeFlight, 1, shape::OnePer<0>, std::vector<FreeFlight>(std::vector<FlightQuery>));
+PATHLAB_REMOTE_CALL(HenyeyGreenstein, 2, shape::OnePer<0>, std::vector<float>(std::vector<PhaseQuery>));
+PATHLAB_REMOTE_CALL(SampleHenyeyGreenstein, 3, shape::OnePer<0>, std::vector<Vec3>(std::vector<PhaseSampleQuery>));
+PATHLAB_REMOTE_CALL(Transmittance, 4, shape::OnePer<1>, std::vector<float>(Scene, std::vector<TransmittanceQuery>));
+PATHLAB_REMOTE_CALL(DirectLightingInMedia, 5, shape::OnePer<2>, std::vector<Color>(Scene, TraceSettings, std::vector<VertexQuery>));
+PATHLAB_REMOTE_CALL(TracePathsInMedia, 6, shape::OnePer<2>, std::vector<Color>(Scene, TraceSettings, std::vector<PathQuery>));
 }  // namespace pathlab::calls
 
 namespace pathlab::wire {

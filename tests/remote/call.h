@@ -6,8 +6,13 @@
 //
 // Every call is a batch: callMany<C>(items) sends many argument tuples in
 // one message (statistical tests draw 10^6 samples), call<C>(args...) one.
+//
+// Every call names the shape of its answer (shape.h): the judge reads no
+// more bytes than a right answer to its request can take, and checks each
+// result against the request it answers as it decodes it.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -15,7 +20,12 @@
 #include <type_traits>
 #include <vector>
 
+#include "shape.h"
 #include "wire.h"
+
+namespace pathlab::calls {
+namespace shape = ::pathlab::remote::shape;  // the suites' calls name their answers' shapes
+}  // namespace pathlab::calls
 
 namespace pathlab::remote {
 
@@ -27,11 +37,14 @@ struct CallType<R(A...)> {
   using Args = std::tuple<std::decay_t<A>...>;
 };
 
-// PATHLAB_REMOTE_CALL(Name, id, Result(Args...)): ids are unique within a suite.
-#define PATHLAB_REMOTE_CALL(Name, callId, ...)               \
+// PATHLAB_REMOTE_CALL(Name, id, Shape, Result(Args...)): ids are unique
+// within a suite; Shape is the answer's (shape.h): shape::Fixed, or e.g.
+// shape::OnePer<2> for a vector as long as the third argument.
+#define PATHLAB_REMOTE_CALL(Name, callId, AnswerShape, ...)  \
   struct Name : ::pathlab::remote::CallType<__VA_ARGS__> {   \
     static constexpr uint32_t id = callId;                   \
     static constexpr const char* name = #Name;               \
+    using Shape = AnswerShape;                               \
   }
 
 // The candidate did not answer: it crashed, threw, or sent something that
@@ -41,26 +54,56 @@ class CandidateError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The longest answer the judge reads, whatever its request: above any
+// right answer the suites ask for (the largest, 10^6 light samples, is
+// under 40 MB), far below what the judge's memory allows.
+inline constexpr uint64_t kMaxAnswerBytes = uint64_t(96) << 20;
+
 // Judge side (judge.cpp): sends one request and returns the answer's
 // payload, starting the candidate process on first use (and again after it
-// crashed). Throws CandidateError.
-std::string exchange(uint32_t id, const char* name, const std::string& request);
+// crashed). An answer longer than maxAnswerBytes is not read. Throws
+// CandidateError.
+std::string exchange(uint32_t id, const char* name, const std::string& request, uint64_t maxAnswerBytes);
+
+// The most bytes a right answer to `items` takes (its shape's bound), at most kMaxAnswerBytes.
+template <class C>
+uint64_t maxAnswerBytes(const std::vector<typename C::Args>& items) {
+  uint64_t most = 0;
+  for (const auto& item : items) {
+    most = shape::saturatingAdd(most, C::Shape::maxBytes(shape::Of<typename C::Result>{}, item));
+  }
+  return std::min(most, kMaxAnswerBytes);
+}
+
+// An answer to `items`, read through C's shape: one result per item, each
+// checked against its item. Throws wire::WireError, naming the result.
+template <class C>
+std::vector<typename C::Result> decodeAnswer(const std::string& answer, const std::vector<typename C::Args>& items) {
+  std::vector<typename C::Result> results(items.size());
+  size_t k = 0;
+  try {
+    wire::Reader reader(answer);
+    for (; k < results.size(); ++k) C::Shape::read(reader, results[k], items[k]);
+    reader.expectEnd();
+  } catch (const wire::WireError& e) {
+    if (results.size() <= 1) throw;
+    throw wire::WireError("result " + std::to_string(k) + " of " + std::to_string(results.size()) + ": " + e.what());
+  }
+  return results;
+}
 
 template <class C>
 std::vector<typename C::Result> callMany(const std::vector<typename C::Args>& items) {
   wire::Writer request;
   request.put(uint64_t(items.size()));
   for (const auto& item : items) request.put(item);
-  const std::string answer = exchange(C::id, C::name, request.bytes());
-  std::vector<typename C::Result> results(items.size());
+  const std::string answer = exchange(C::id, C::name, request.bytes(), maxAnswerBytes<C>(items));
   try {
-    wire::Reader reader(answer);
-    for (auto& result : results) read(reader, result);
-    reader.expectEnd();
+    return decodeAnswer<C>(answer, items);
   } catch (const wire::WireError& e) {
-    throw CandidateError(std::string("the candidate's answer to ") + C::name + " is malformed: " + e.what());
+    throw CandidateError(std::string("the candidate's answer to ") + C::name + " does not match its request: " +
+                         e.what());
   }
-  return results;
 }
 
 template <class C, class... A>

@@ -53,14 +53,14 @@ class Candidate {
  public:
   ~Candidate() { stop(); }
 
-  std::string exchange(uint32_t id, const char* name, const std::string& request) {
+  std::string exchange(uint32_t id, const char* name, const std::string& request, uint64_t maxAnswerBytes) {
     if (!process_.running()) start();
     uint32_t status = 0;
     std::string answer;
     bool answered = false;
     try {
       writeMessage(toCandidate_, kRequestMagic, id, request);
-      answered = readMessage(fromCandidate_, kResponseMagic, status, answer);
+      answered = readMessage(fromCandidate_, kResponseMagic, status, answer, maxAnswerBytes);
     } catch (const std::exception& e) {
       const std::string how = died(name);
       // How the candidate ended, and what was wrong with its answer (a crash
@@ -175,9 +175,9 @@ std::mutex callMutex;  // tests may call from several threads; one request at a 
 
 }  // namespace
 
-std::string exchange(uint32_t id, const char* name, const std::string& request) {
+std::string exchange(uint32_t id, const char* name, const std::string& request, uint64_t maxAnswerBytes) {
   std::lock_guard<std::mutex> lock(callMutex);
-  return candidate().exchange(id, name, request);
+  return candidate().exchange(id, name, request, maxAnswerBytes);
 }
 
 std::string takeCandidateOutput() { return candidate().takeOutput(); }

@@ -81,15 +81,16 @@ void writeMessage(int fd, uint32_t magic, uint32_t value, const std::string& pay
   writeAll(fd, payload.data(), payload.size());
 }
 
-bool readMessage(int fd, uint32_t magic, uint32_t& value, std::string& payload) {
+bool readMessage(int fd, uint32_t magic, uint32_t& value, std::string& payload, uint64_t maxBytes) {
   Header header;
   if (!readAll(fd, &header, sizeof header)) return false;
   if (header.magic != magic) throw std::runtime_error("not a message of this protocol (bad magic number)");
   const bool error = magic == kResponseMagic && header.value != uint32_t(Status::Ok);
-  if (header.size > (error ? kMaxErrorMessageBytes : kMaxMessageBytes)) {
+  const uint64_t limit = error ? kMaxErrorMessageBytes : std::min(maxBytes, kMaxMessageBytes);
+  if (header.size > limit) {
     throw std::runtime_error((error ? "an error message of " : "a message of ") + std::to_string(header.size) +
-                             " bytes is over the limit of " +
-                             std::to_string(error ? kMaxErrorMessageBytes : kMaxMessageBytes) + " bytes");
+                             " bytes is over the limit of " + std::to_string(limit) + " bytes" +
+                             (error || limit == kMaxMessageBytes ? "" : " (the most a right answer to this request takes)"));
   }
   value = header.value;
   payload.resize(header.size);

@@ -56,10 +56,10 @@ long readSome(int fd, void* data, size_t size);
 void closeDescriptor(int fd);  // ignores -1
 
 // One framed message: header then payload. readMessage returns false at a
-// clean end of file and throws on a bad magic or an oversized payload
-// (over kMaxMessageBytes; for a response whose status is not Ok, over
-// kMaxErrorMessageBytes).
+// clean end of file and throws on a bad magic or an oversized payload, read
+// no further (over maxBytes and kMaxMessageBytes; for a response whose status
+// is not Ok, over kMaxErrorMessageBytes).
 void writeMessage(int fd, uint32_t magic, uint32_t value, const std::string& payload);
-bool readMessage(int fd, uint32_t magic, uint32_t& value, std::string& payload);
+bool readMessage(int fd, uint32_t magic, uint32_t& value, std::string& payload, uint64_t maxBytes = kMaxMessageBytes);
 
 }  // namespace pathlab::remote

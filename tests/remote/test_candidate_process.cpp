@@ -61,7 +61,7 @@ int runCandidate() {
 // The CandidateError's message of a call, or "" when it answered.
 std::string failureOf(uint32_t id, const char* name) {
   try {
-    remote::exchange(id, name, "x");
+    remote::exchange(id, name, "x", remote::kMaxAnswerBytes);
   } catch (const remote::CandidateError& e) {
     return e.what();
   }
@@ -81,8 +81,8 @@ int main() {
   setEnvironment("ASAN_OPTIONS", std::string(asan ? asan : "") + ":handle_segv=0");
   setEnvironment("PATHLAB_CANDIDATE", pathlab::currentExecutablePath());
 
-  expect(remote::exchange(1, "answer", "ping") == "ping back", "a call answered");
-  expect(remote::exchange(1, "answer", "pong") == "pong back", "a second call on the same candidate");
+  expect(remote::exchange(1, "answer", "ping", remote::kMaxAnswerBytes) == "ping back", "a call answered");
+  expect(remote::exchange(1, "answer", "pong", remote::kMaxAnswerBytes) == "pong back", "a second call on the same candidate");
   const std::string threw = failureOf(4, "throw");
   expect(contains(threw, "threw an exception in throw: x back"), "an exception reported (" + threw + ")");
   std::string output;
@@ -102,12 +102,21 @@ int main() {
   expect(contains(crash, "the task's code crashed (") && contains(crash, crashName) &&
              contains(crash, "while computing crash"),
          "a crash reported (" + crash + ")");
-  expect(remote::exchange(1, "answer", "again") == "again back", "a fresh candidate after the crash");
+  expect(remote::exchange(1, "answer", "again", remote::kMaxAnswerBytes) == "again back", "a fresh candidate after the crash");
   const std::string exited = failureOf(3, "exit");
   expect(contains(exited, "the candidate exited (exit code 7) while computing exit"),
          "an exit code reported (" + exited + ")");
-  expect(remote::exchange(1, "answer", "last") == "last back", "a fresh candidate after the exit");
+  expect(remote::exchange(1, "answer", "last", remote::kMaxAnswerBytes) == "last back", "a fresh candidate after the exit");
+  // An answer longer than its request allows is refused from its header, unread.
+  std::string tooLong;
+  try {
+    remote::exchange(1, "answer", "long", 8);
+  } catch (const remote::CandidateError& e) {
+    tooLong = e.what();
+  }
+  expect(contains(tooLong, "a message of 9 bytes is over the limit of 8 bytes"), "an answer too long refused (" + tooLong + ")");
+  expect(remote::exchange(1, "answer", "after", remote::kMaxAnswerBytes) == "after back", "a fresh candidate after it");
 
-  std::printf("%d passed, %d failed\n", 8 - failures, failures);
+  std::printf("%d passed, %d failed\n", 10 - failures, failures);
   return failures == 0 ? 0 : 1;
 }

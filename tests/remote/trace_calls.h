@@ -6,6 +6,7 @@
 // tests would in one process.
 #pragma once
 
+#include <algorithm>
 #include <tuple>
 #include <vector>
 
@@ -25,14 +26,26 @@ struct TraceSettings {
 using DirectQuery = std::tuple<Hit, Vec3 /*wo*/, uint32_t /*pixel*/, uint64_t /*seed*/>;
 using PathQuery = std::tuple<Ray, uint32_t /*pixel*/, uint64_t /*seed*/>;
 
-PATHLAB_REMOTE_CALL(DirectLighting, 101, std::vector<Color>(Scene, TraceSettings, std::vector<DirectQuery>));
-PATHLAB_REMOTE_CALL(TracePaths, 102, std::vector<Color>(Scene, TraceSettings, std::vector<PathQuery>));
+PATHLAB_REMOTE_CALL(DirectLighting, 101, shape::OnePer<2>, std::vector<Color>(Scene, TraceSettings, std::vector<DirectQuery>));
+PATHLAB_REMOTE_CALL(TracePaths, 102, shape::OnePer<2>, std::vector<Color>(Scene, TraceSettings, std::vector<PathQuery>));
 // Bsdf(material, hit, wo).sample(wo, u) for each u.
-PATHLAB_REMOTE_CALL(BsdfSamples, 103, std::vector<std::optional<BsdfSample>>(Material, Hit, Vec3, std::vector<Vec2>));
+PATHLAB_REMOTE_CALL(BsdfSamples, 103, shape::OnePer<3>, std::vector<std::optional<BsdfSample>>(Material, Hit, Vec3, std::vector<Vec2>));
 // The occlusion queries each DirectLighting query made, as the trace
 // context records them (the framework's log, not the candidate's report).
 using ShadowQuery = std::tuple<Ray, Interval>;
-PATHLAB_REMOTE_CALL(ShadowRays, 104,
+// At most -l rays per emitting surface and one per point light and for the
+// sky (twice that: room for an estimator that tests a sample twice).
+struct ShadowRayCount {
+  static size_t of(const std::tuple<Scene, TraceSettings, std::vector<DirectQuery>>& args) {
+    const Scene& scene = std::get<0>(args);
+    size_t surfaces = scene.spheres.size();
+    for (const TriangleMesh& mesh : scene.meshes) surfaces += mesh.triangles.size();
+    const size_t perLight = size_t(std::max(1, std::get<1>(args).lightSamples));
+    return 2 * (perLight * (surfaces + 1) + scene.pointLights.size());
+  }
+};
+using ShadowRaysPerQuery = shape::OnePer<2, shape::AtMost<ShadowRayCount>>;
+PATHLAB_REMOTE_CALL(ShadowRays, 104, ShadowRaysPerQuery,
                     std::vector<std::vector<ShadowQuery>>(Scene, TraceSettings, std::vector<DirectQuery>));
 
 inline TraceSettings settingsOf(const TraceContext& context) {

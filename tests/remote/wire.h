@@ -3,9 +3,12 @@
 // (both processes run on the same machine).
 //
 // The judge decodes what a hostile candidate sends, so decoding never
-// trusts a size: every count is checked against the bytes that are really
-// there before anything is allocated, booleans must be 0 or 1, an image's
-// pixel count must match its size, and a message must be consumed exactly.
+// trusts a size: a count is checked against the bytes that are really there,
+// at the least size each element takes on the wire, before anything is
+// allocated; booleans must be 0 or 1, an image's pixel count must match its
+// size, and a message must be consumed exactly. What an answer must hold to
+// match its request (its lengths, its image size) is checked as it is read,
+// by the call's shape (shape.h).
 #pragma once
 
 #include <cstdint>
@@ -69,6 +72,15 @@ class Reader {
     if (minimumSize > 0 && n > remaining() / minimumSize) throw WireError("count larger than the message");
     return size_t(n);
   }
+  // A count that must be exactly `expected` (the request says how many).
+  void expectCount(size_t expected, const char* what) {
+    uint64_t n = 0;
+    raw(&n, sizeof n);
+    if (n != expected) {
+      throw WireError(std::string(what) + ": " + std::to_string(n) + " elements, the request asked for " +
+                      std::to_string(expected));
+    }
+  }
   size_t remaining() const { return size_t(end_ - at_); }
   void expectEnd() const {
     if (at_ != end_) throw WireError("message has " + std::to_string(remaining()) + " bytes too many");
@@ -105,6 +117,81 @@ struct IsGlmVector<glm::vec<N, T, Q>> : std::true_type {};
 // Types whose bytes are their value (no padding, every bit pattern valid).
 template <class T>
 concept Bulk = Plain<T> || (IsGlmVector<T>::value && Plain<typename T::value_type>);
+
+// ---------------------------------------------------------------- sizes
+
+template <class T>
+struct IsOptional : std::false_type {};
+template <class T>
+struct IsOptional<std::optional<T>> : std::true_type {};
+template <class T>
+struct IsTuple : std::false_type {};
+template <class... T>
+struct IsTuple<std::tuple<T...>> : std::true_type {};
+
+// The tuple of a struct's field types (Fields<T>::tie gives references).
+template <class T>
+using FieldTypes = decltype(std::apply([](auto&... f) { return std::tuple<std::decay_t<decltype(f)>...>{}; },
+                                       Fields<T>::tie(std::declval<T&>())));
+
+template <class Tuple, class F>
+constexpr auto overTupleTypes(F f) {
+  return [&]<size_t... I>(std::index_sequence<I...>) { return f.template operator()<std::tuple_element_t<I, Tuple>...>(); }(
+      std::make_index_sequence<std::tuple_size_v<Tuple>>{});
+}
+
+// Whether every value of T takes the same bytes, or at most a known number:
+// no part whose length the writer chooses (no string, vector or image).
+template <class T>
+constexpr bool fixedSize() {
+  if constexpr (Bulk<T> || std::is_same_v<T, bool> || std::is_enum_v<T>) {
+    return true;
+  } else if constexpr (IsOptional<T>::value) {
+    return fixedSize<typename T::value_type>();
+  } else if constexpr (IsTuple<T>::value) {
+    return overTupleTypes<T>([]<class... E>() { return (fixedSize<E>() && ...); });
+  } else if constexpr (HasFields<T>) {
+    return fixedSize<FieldTypes<T>>();
+  } else {
+    return false;
+  }
+}
+template <class T>
+concept FixedSize = fixedSize<T>();
+
+// The fewest (Most = false) or the most (Most = true) bytes a T takes on
+// the wire. The fewest bound a count of T before anything is allocated (a
+// count larger than what is left over this is a lie); the most exist for
+// FixedSize types only.
+template <class T, bool Most>
+constexpr size_t wireSizeBound() {
+  if constexpr (Bulk<T>) {
+    return sizeof(T);
+  } else if constexpr (std::is_same_v<T, bool>) {
+    return 1;
+  } else if constexpr (std::is_enum_v<T>) {
+    return sizeof(std::underlying_type_t<T>);
+  } else if constexpr (IsOptional<T>::value) {
+    return Most ? 1 + wireSizeBound<typename T::value_type, Most>() : 1;
+  } else if constexpr (IsTuple<T>::value) {
+    return overTupleTypes<T>([]<class... E>() { return (size_t(0) + ... + wireSizeBound<E, Most>()); });
+  } else if constexpr (HasFields<T>) {
+    return wireSizeBound<FieldTypes<T>, Most>();
+  } else {
+    static_assert(!Most, "a string, a vector or an image has no most size");
+    return sizeof(uint64_t);  // their counts at least
+  }
+}
+template <class T>
+constexpr size_t minWireSize() {
+  return wireSizeBound<T, false>();
+}
+template <FixedSize T>
+constexpr size_t maxWireSize() {
+  return wireSizeBound<T, true>();
+}
+
+// ---------------------------------------------------------------- values
 
 template <Bulk T>
 void write(Writer& w, const T& value) { w.raw(&value, sizeof value); }
@@ -144,15 +231,19 @@ void write(Writer& w, const std::vector<T>& v) {
   }
 }
 template <class T>
-void read(Reader& r, std::vector<T>& v) {
+void readElements(Reader& r, std::vector<T>& v, size_t n) {
   if constexpr (Bulk<T>) {
-    v.resize(r.count(sizeof(T)));
+    v.resize(n);
     r.raw(v.data(), v.size() * sizeof(T));
   } else {
     v.clear();
-    v.resize(r.count(1));  // every element takes at least a byte
+    v.resize(n);
     for (T& x : v) read(r, x);
   }
+}
+template <class T>
+void read(Reader& r, std::vector<T>& v) {
+  readElements(r, v, r.count(minWireSize<T>()));
 }
 
 template <class T>
