@@ -8,8 +8,9 @@
 namespace pathlab::remote {
 namespace {
 
-// Thrown by a pixel's sample function when the pixel asks for far more
-// samples than its maximum (a loop with no maximum): the pixel stops there.
+// Thrown by a pixel's sample function when the judge serves no more (the
+// pixel asked for far more samples than its maximum: a loop with no
+// maximum): the pixel stops there.
 struct Overrun {};
 
 }  // namespace
@@ -35,22 +36,27 @@ void registerCalls(Server& server) {
     for (const RunningStatistics& stats : all) verdicts.push_back(confidentEnough(stats, settings) ? 1 : 0);
     return verdicts;
   });
-  server.serve<calls::SamplePixels>([](const std::vector<std::vector<Color>>& sequences, const AdaptiveSettings& settings) {
-    std::vector<calls::SampledPixel> results;
-    for (const std::vector<Color>& values : sequences) {
-      calls::SampledPixel result;
-      // Past the judge's sequence (its maximum), zeros; far past it, the pixel is stopped.
-      const uint64_t limit = 4ull * values.size() + 1024;
+  server.serve<calls::SamplePixels>([](const std::vector<std::vector<Color>>& given, const AdaptiveSettings& settings) {
+    std::vector<AdaptivePixel> results;
+    for (uint32_t k = 0; k < given.size(); ++k) {
+      std::vector<Color> served = given[k];  // pixel k's samples, as far as the judge has served them
       const auto sample = [&](uint32_t i) {
-        if (++result.calls > limit) throw Overrun{};
-        return i < values.size() ? values[i] : Color(0.0f);
+        while (i >= served.size()) {
+          wire::Writer question;
+          question.put(k);
+          question.put(uint32_t(served.size()));
+          const std::vector<Color> batch = wire::Reader(ask(question.bytes())).get<std::vector<Color>>();
+          if (batch.empty()) throw Overrun{};
+          served.insert(served.end(), batch.begin(), batch.end());
+        }
+        return served[i];
       };
+      AdaptivePixel pixel;
       try {
-        result.pixel = samplePixelAdaptively(sample, settings);
+        pixel = samplePixelAdaptively(sample, settings);
       } catch (const Overrun&) {
-        result.overran = true;
       }
-      results.push_back(result);
+      results.push_back(pixel);
     }
     return results;
   });

@@ -70,11 +70,10 @@ Case caseOf(std::vector<typename C::Args> items, const std::vector<typename C::R
 std::vector<Case> makeCases() {
   std::vector<Case> cases;
   const Scene scene = smallScene();
-  test::PixelMoments moments{8, 6, 4, std::vector<Color>(48, Color(0.5f)), std::vector<Color>(48, Color(0.01f)), 0, true, {}};
+  test::PixelMoments moments{8, 6, 4, std::vector<Color>(48, Color(0.5f)), std::vector<Color>(48, Color(0.01f)), 0, true};
   cases.push_back(caseOf<calls::RenderMoments>({{scene, test::ImageOptions{}}}, {moments}));
   test::ImageOptions adaptive;
   adaptive.adaptive = AdaptiveSettings{};
-  moments.samples.assign(48, 64);
   cases.push_back(caseOf<calls::RenderMoments>({{scene, adaptive}}, {moments}));
 
   std::vector<Aabb> boxes(10, Aabb{Point3(0.0f), Point3(1.0f)});
@@ -106,11 +105,9 @@ std::vector<Case> makeCases() {
   const std::vector<calls::DirectQuery> queries(2);
   cases.push_back(caseOf<calls::ShadowRays>({{scene, calls::TraceSettings{}, queries}},
                                             {{{{Ray{Point3(0.0f), Vec3(0, 1, 0)}, Interval{0.0f, 1.0f}}}, {}}}));
-  calls::SampledPixel pixel;
-  pixel.pixel.samples = 3;
-  pixel.calls = 3;
-  cases.push_back(caseOf<calls::SamplePixels>({{{{Color(1.0f), Color(2.0f), Color(3.0f)}}, AdaptiveSettings{}}},
-                                              {{pixel}}));
+  AdaptivePixel pixel;
+  pixel.samples = 3;
+  cases.push_back(caseOf<calls::SamplePixels>({{std::vector<std::vector<Color>>(3), AdaptiveSettings{}}}, {{pixel, pixel, pixel}}));
   return cases;
 }
 

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -59,11 +60,18 @@ class CandidateError : public std::runtime_error {
 // under 40 MB), far below what the judge's memory allows.
 inline constexpr uint64_t kMaxAnswerBytes = uint64_t(96) << 20;
 
+// What the judge answers when the candidate asks it for data mid-call
+// (protocol.h): the reply to one ask's payload. Throws CandidateError for an
+// ask it refuses (the call then fails with that message).
+using AskHandler = std::function<std::string(const std::string& ask)>;
+
 // Judge side (judge.cpp): sends one request and returns the answer's
 // payload, starting the candidate process on first use (and again after it
-// crashed). An answer longer than maxAnswerBytes is not read. Throws
-// CandidateError.
-std::string exchange(uint32_t id, const char* name, const std::string& request, uint64_t maxAnswerBytes);
+// crashed); answers the candidate's asks with `asks` meanwhile (without one,
+// an ask fails the call). An answer longer than maxAnswerBytes is not read.
+// Throws CandidateError.
+std::string exchange(uint32_t id, const char* name, const std::string& request, uint64_t maxAnswerBytes,
+                     const AskHandler* asks = nullptr);
 
 // The most bytes a right answer to `items` takes (its shape's bound), at most kMaxAnswerBytes.
 template <class C>
@@ -93,11 +101,11 @@ std::vector<typename C::Result> decodeAnswer(const std::string& answer, const st
 }
 
 template <class C>
-std::vector<typename C::Result> callMany(const std::vector<typename C::Args>& items) {
+std::vector<typename C::Result> callMany(const std::vector<typename C::Args>& items, const AskHandler* asks = nullptr) {
   wire::Writer request;
   request.put(uint64_t(items.size()));
   for (const auto& item : items) request.put(item);
-  const std::string answer = exchange(C::id, C::name, request.bytes(), maxAnswerBytes<C>(items));
+  const std::string answer = exchange(C::id, C::name, request.bytes(), maxAnswerBytes<C>(items), asks);
   try {
     return decodeAnswer<C>(answer, items);
   } catch (const wire::WireError& e) {

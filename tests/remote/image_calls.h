@@ -12,9 +12,9 @@
 #include "call.h"
 
 namespace pathlab::calls {
-// A render of the size asked for: width x height means and variances (and,
-// for an adaptive render, a count per pixel), with the request's samples
-// per pixel; its count of NaN or Inf samples at most the samples it took.
+// A render of the size asked for: width x height means and variances, with
+// the request's samples per pixel; its count of NaN or Inf samples at most
+// the samples it can have taken.
 struct MomentsShape {
   using Args = std::tuple<Scene, test::ImageOptions>;
   static size_t pixels(const Args& args) {
@@ -23,7 +23,7 @@ struct MomentsShape {
   }
   static uint64_t maxBytes(shape::Of<test::PixelMoments>, const Args& args) {
     const uint64_t n = pixels(args);
-    return 3 * sizeof(int) + 2 * (8 + n * sizeof(Color)) + sizeof(uint64_t) + 1 + 8 + n * sizeof(uint32_t);
+    return 3 * sizeof(int) + 2 * (8 + n * sizeof(Color)) + sizeof(uint64_t) + 1;
   }
   static void read(wire::Reader& r, test::PixelMoments& m, const Args& args) {
     const RenderSettings& asked = std::get<0>(args).render;
@@ -48,8 +48,6 @@ struct MomentsShape {
       throw wire::WireError(std::to_string(m.nonFinite) + " NaN or Inf samples, more than the render took");
     }
     wire::read(r, m.usedBvh);
-    r.expectCount(adaptive ? n : 0, "the pixels' sample counts");
-    wire::readElements(r, m.samples, adaptive ? n : 0);
   }
 };
 
@@ -64,7 +62,7 @@ struct Fields<test::ImageOptions> {
 template <>
 struct Fields<test::PixelMoments> {
   static auto tie(test::PixelMoments& s) {
-    return std::tie(s.width, s.height, s.spp, s.mean, s.varianceOfMean, s.nonFinite, s.usedBvh, s.samples);
+    return std::tie(s.width, s.height, s.spp, s.mean, s.varianceOfMean, s.nonFinite, s.usedBvh);
   }
 };
 }  // namespace pathlab::wire

@@ -53,14 +53,24 @@ class Candidate {
  public:
   ~Candidate() { stop(); }
 
-  std::string exchange(uint32_t id, const char* name, const std::string& request, uint64_t maxAnswerBytes) {
+  std::string exchange(uint32_t id, const char* name, const std::string& request, uint64_t maxAnswerBytes,
+                       const AskHandler* asks) {
     if (!process_.running()) start();
     uint32_t status = 0;
     std::string answer;
     bool answered = false;
     try {
       writeMessage(toCandidate_, kRequestMagic, id, request);
-      answered = readMessage(fromCandidate_, kResponseMagic, status, answer, maxAnswerBytes);
+      // Asks first, each answered, until the answer comes.
+      while ((answered = readMessage(fromCandidate_, kResponseMagic, status, answer, maxAnswerBytes)) &&
+             Status(status) == Status::Asks) {
+        if (!asks) throw CandidateError(std::string("the candidate asked the judge for data during ") + name +
+                                        ", which serves none");
+        writeMessage(toCandidate_, kRequestMagic, kReplyId, (*asks)(answer));
+      }
+    } catch (const CandidateError&) {
+      stop();  // the judge refused an ask: the candidate waits for a reply it will not get
+      throw;
     } catch (const std::exception& e) {
       const std::string how = died(name);
       // How the candidate ended, and what was wrong with its answer (a crash
@@ -175,9 +185,10 @@ std::mutex callMutex;  // tests may call from several threads; one request at a 
 
 }  // namespace
 
-std::string exchange(uint32_t id, const char* name, const std::string& request, uint64_t maxAnswerBytes) {
+std::string exchange(uint32_t id, const char* name, const std::string& request, uint64_t maxAnswerBytes,
+                     const AskHandler* asks) {
   std::lock_guard<std::mutex> lock(callMutex);
-  return candidate().exchange(id, name, request, maxAnswerBytes);
+  return candidate().exchange(id, name, request, maxAnswerBytes, asks);
 }
 
 std::string takeCandidateOutput() { return candidate().takeOutput(); }

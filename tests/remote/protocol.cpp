@@ -77,6 +77,13 @@ void writeAll(int fd, const void* data, size_t size) {
 
 void writeMessage(int fd, uint32_t magic, uint32_t value, const std::string& payload) {
   Header header{magic, value, payload.size()};
+  if (payload.size() <= 4096) {  // one write: an ask and its reply go back and forth thousands of times
+    char message[sizeof header + 4096];
+    std::memcpy(message, &header, sizeof header);
+    std::memcpy(message + sizeof header, payload.data(), payload.size());
+    writeAll(fd, message, sizeof header + payload.size());
+    return;
+  }
   writeAll(fd, &header, sizeof header);
   writeAll(fd, payload.data(), payload.size());
 }
@@ -85,12 +92,14 @@ bool readMessage(int fd, uint32_t magic, uint32_t& value, std::string& payload, 
   Header header;
   if (!readAll(fd, &header, sizeof header)) return false;
   if (header.magic != magic) throw std::runtime_error("not a message of this protocol (bad magic number)");
-  const bool error = magic == kResponseMagic && header.value != uint32_t(Status::Ok);
-  const uint64_t limit = error ? kMaxErrorMessageBytes : std::min(maxBytes, kMaxMessageBytes);
+  const bool error = magic == kResponseMagic && header.value != uint32_t(Status::Ok) &&
+                     header.value != uint32_t(Status::Asks);
+  const bool ask = magic == kResponseMagic && header.value == uint32_t(Status::Asks);
+  const uint64_t limit = error ? kMaxErrorMessageBytes : ask ? kMaxAskBytes : std::min(maxBytes, kMaxMessageBytes);
   if (header.size > limit) {
     throw std::runtime_error((error ? "an error message of " : "a message of ") + std::to_string(header.size) +
                              " bytes is over the limit of " + std::to_string(limit) + " bytes" +
-                             (error || limit == kMaxMessageBytes ? "" : " (the most a right answer to this request takes)"));
+                             (error || ask || limit == kMaxMessageBytes ? "" : " (the most a right answer to this request takes)"));
   }
   value = header.value;
   payload.resize(header.size);

@@ -13,6 +13,13 @@
 //
 // A call is a batch: the payload is a count and that many argument tuples,
 // the answer that many results (calls.h in each suite's folder lists them).
+//
+// While it computes an answer, the candidate may ask the judge for data the
+// judge serves only when asked, so that the judge itself counts what was
+// taken (task 11's samples, served a batch at a time):
+//   ask:      Header{kResponseMagic, Status::Asks, payload size}  payload
+//   reply:    Header{kRequestMagic, kReplyId, payload size}  payload
+// and then goes on to its answer.
 #pragma once
 
 #include <cstdint>
@@ -35,7 +42,11 @@ enum class Status : uint32_t {
   Threw = 1,        // the task's code threw: the payload is the message
   UnknownCall = 2,  // this candidate does not serve that call
   BadRequest = 3,   // the request did not decode
+  Asks = 4,         // not an answer yet: a question to the judge (above)
 };
+inline constexpr uint32_t kReplyId = 0xFFFFFFFF;  // the judge's reply to an ask
+// The longest ask the judge reads (asks are a few numbers).
+inline constexpr uint64_t kMaxAskBytes = 4096;
 
 struct Header {
   uint32_t magic = 0;

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <tuple>
 #include <unordered_map>
 
@@ -33,6 +34,11 @@ class Server {
  private:
   std::unordered_map<uint32_t, std::function<void(wire::Reader&, wire::Writer&)>> handlers_;
 };
+
+// During a call: asks the judge for data it serves only when asked
+// (protocol.h) and returns its reply. Throws std::runtime_error when the
+// judge does not reply.
+std::string ask(const std::string& question);
 
 // Defined by the suite's serve.cpp.
 void registerCalls(Server& server);

@@ -270,7 +270,7 @@ PixelMoments checkImage(ImageCase c) {
   PixelMoments reference;
   try {
     const Image mean = readImage(meanPath), variance = readImage(variancePath);
-    reference = {mean.width, mean.height, 0, mean.pixels, variance.pixels, 0, true, {}};
+    reference = {mean.width, mean.height, 0, mean.pixels, variance.pixels, 0, true};
   } catch (const Error& e) {
     FAIL("the reference image is missing (tools/make-reference-images writes it): " << std::string(e.what()));
   }

@@ -38,7 +38,7 @@ struct ImageCase {
 std::string referenceImagePath(const std::string& suite, const std::string& name, const char* suffix);
 
 // CHECKs that the candidate's render of `c` matches the reference image;
-// returns that render (an adaptive one's sample counts: task 11's tests).
+// returns that render.
 PixelMoments checkImage(ImageCase c);
 
 }  // namespace pathlab::test
