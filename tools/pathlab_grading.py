@@ -21,7 +21,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
-from pathlab_sandbox import MemoryWatch, run  # noqa: E402
+from pathlab_sandbox import JUDGE_MEMORY, MemoryWatch, run  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 TASKS = pathlab_tasks.tasks()  # {n: (folder, file)}: the tasks/NN-name folders
@@ -197,6 +197,9 @@ class Grader:
         self.verdicts = Path(tempfile.mkdtemp(prefix="verdicts-", dir=self.work))  # 0700: the judge's only
         self.sandbox = sandbox
         self.isolation_checked = False
+        # The judge's memory limit (pathlab_sandbox.JUDGE_MEMORY); not under
+        # sanitizers, whose shadow memory is the judge's own memory too.
+        self.judge_memory = None if getattr(args, "sanitize", "") else JUDGE_MEMORY
         # Pictures of failed image tests (the student's render, the reference,
         # a z-score map), written by the judge next to results.json.
         out = Path(args.out).resolve()
@@ -478,9 +481,11 @@ class Grader:
                    PATHLAB_IMAGE_FAILURES_DIR=str(self.pictures))
         escaped = "".join("\\" + c if c in ",\\" else ("?" if c in "*[]" else c) for c in name)
         started = time.time()
+        judge = {}  # its own memory is limited too: a hostile answer must fail this test, not the grade
         with self.watch() as watch:
             code, out = run([str(self.build / "tests" / f"test-{directory}"), f"--test-case={escaped}",
-                             "--no-version", "--no-intro"], timeout=limit, env=env)
+                             "--no-version", "--no-intro"], timeout=limit, env=env, memory_limit=self.judge_memory,
+                            memory=judge)
         timing = (time.time() - started, limit)
         self.sandbox.clean_up()
         out = out.replace(f"{self.pictures}/", f"{self.pictures.name}/")  # named beside results.json
@@ -495,6 +500,10 @@ class Grader:
                     pass
         if watch.exceeded:
             self.record(task, name, 0, points, watch.message() + "\n" + out, visibility=visibility, timing=timing)
+        elif judge.get("exceeded"):
+            self.record(task, name, 0, points, f"the judge needed more than its {self.judge_memory >> 20} MB of memory "
+                        "for this test's answers, and was stopped (does the candidate send far more than was asked "
+                        "for?)\n" + out, visibility=visibility, timing=timing)
         elif code is None:
             self.record(task, name, 0, points, f"timed out after {limit:g} s (an endless loop?)\n" + out,
                         visibility=visibility, timing=timing)

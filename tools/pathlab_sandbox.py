@@ -17,7 +17,11 @@ SANDBOX_UID = int(os.environ.get("PATHLAB_SANDBOX_UID", "64990"))  # a uid nothi
 CANDIDATE_LIMITS = ["--nofile=256", "--fsize=67108864", "--core=0"]
 ADDRESS_SPACE = "--as=8589934592"  # 8 GB; not under sanitizers, whose shadow memory reserves terabytes
 CANDIDATE_PROCESSES = 64     # RLIMIT_NPROC of the sandbox uid: a fork bomb stops here
-GRADER_MEMORY = 256 << 20    # what the grader, its judge and the page cache they need keep for themselves
+# The judge's own memory (own_memory): beyond it the judge is stopped and its
+# test case fails (every suite's test cases stay under 70 MB: docs/ta-guide.md).
+# PATHLAB_JUDGE_MEMORY for a course whose own tests need more.
+JUDGE_MEMORY = int(os.environ.get("PATHLAB_JUDGE_MEMORY", 224 << 20))
+GRADER_MEMORY = 320 << 20    # what the grader, its judge and the page cache they need keep for themselves
 
 
 def container_memory_limit():
@@ -70,11 +74,25 @@ SHM_BYTES = 16 << 20         # bubblewrap's /dev/shm (its /tmp: Sandbox.command'
 OUTPUT_KEPT = 1 << 20        # bytes of a command's output run() holds from each end
 
 
-def run(command, cwd=None, timeout=None, env=None, keep=OUTPUT_KEPT):
+def own_memory(pid: int) -> int:
+    """What a process holds of its own in memory: its resident anonymous and
+    shared pages (RssAnon + RssShmem of /proc/PID/status), not the files it
+    maps (libraries, read-only data, which the kernel can drop). 0 when gone."""
+    try:
+        fields = dict(line.split(":", 1) for line in Path(f"/proc/{pid}/status").read_text().splitlines() if ":" in line)
+        return sum(int(fields.get(k, "0 kB").split()[0]) for k in ("RssAnon", "RssShmem")) * 1024
+    except (OSError, ValueError):
+        return 0
+
+
+def run(command, cwd=None, timeout=None, env=None, keep=OUTPUT_KEPT, memory_limit=None, memory=None):
     """Runs a command in its own session; returns (exit code or None on timeout, output).
     Of the output only the first and last `keep` bytes are held (a flood of
     compiler diagnostics must not fill the grader's memory); the middle is
-    replaced by a line saying how much was left out."""
+    replaced by a line saying how much was left out. With memory_limit
+    (bytes), the command's own memory (own_memory, its process alone, every
+    50 ms) may not pass it: the session is stopped, and `memory` (a dict, if
+    given) says so ("exceeded") with the most seen ("peak")."""
     if os.name == "nt":
         return run_windows(command, cwd, timeout, env)
     try:
@@ -84,7 +102,16 @@ def run(command, cwd=None, timeout=None, env=None, keep=OUTPUT_KEPT):
         return 127, str(e)
     head, tail, dropped = bytearray(), bytearray(), 0
     deadline = None if timeout is None else time.monotonic() + timeout
-    timed_out = False
+    timed_out = exceeded = False
+    peak = 0
+
+    def over_limit():
+        nonlocal peak
+        if memory_limit is None:
+            return False
+        peak = max(peak, own_memory(p.pid))
+        return peak > memory_limit
+
     try:
         with selectors.DefaultSelector() as selector:
             selector.register(p.stdout, selectors.EVENT_READ)
@@ -93,7 +120,13 @@ def run(command, cwd=None, timeout=None, env=None, keep=OUTPUT_KEPT):
                 if left is not None and left <= 0:
                     timed_out = True
                     break
-                if not selector.select(left):
+                if memory_limit is not None:
+                    left = 0.05 if left is None else min(left, 0.05)
+                ready = selector.select(left)
+                if over_limit():
+                    exceeded = True
+                    break
+                if not ready:
                     continue
                 chunk = os.read(p.stdout.fileno(), 1 << 16)
                 if not chunk:
@@ -104,11 +137,17 @@ def run(command, cwd=None, timeout=None, env=None, keep=OUTPUT_KEPT):
                 if len(tail) > keep:
                     dropped += len(tail) - keep
                     del tail[:len(tail) - keep]
-        if not timed_out:
-            try:
-                p.wait(timeout=None if deadline is None else max(deadline - time.monotonic(), 0.01))
-            except subprocess.TimeoutExpired:
+        while not (timed_out or exceeded):  # the output is closed: wait for the exit, within the time and memory
+            left = None if deadline is None else deadline - time.monotonic()
+            if left is not None and left <= 0:
                 timed_out = True
+                break
+            step = left if memory_limit is None else (0.05 if left is None else min(left, 0.05))
+            try:
+                p.wait(timeout=step)
+                break
+            except subprocess.TimeoutExpired:
+                exceeded = over_limit()
     finally:
         try:
             os.killpg(p.pid, signal.SIGKILL)  # nothing of the session outlives it
@@ -116,8 +155,10 @@ def run(command, cwd=None, timeout=None, env=None, keep=OUTPUT_KEPT):
             pass
         p.wait()
         p.stdout.close()
+    if memory is not None:
+        memory.update(peak=peak, exceeded=exceeded)
     out = bytes(head) + (f"\n[... {dropped} bytes of output left out ...]\n".encode() if dropped else b"") + bytes(tail)
-    return (None if timed_out else p.returncode), out.decode("utf-8", "replace")
+    return (None if timed_out or exceeded else p.returncode), out.decode("utf-8", "replace")
 
 
 def run_windows(command, cwd, timeout, env):

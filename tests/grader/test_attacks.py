@@ -1,7 +1,10 @@
 """Hostile submissions against tools/grade (tests/grader/attacks/*.cpp).
 
-Each attack is a task-1 file: the stub (or the reference, for an attack
-that also does the work honestly) with the attack appended, which knows the
+Each attack is a task file (task 1's, or the task its "task: NN" names):
+the stub (or the reference, for an attack that also does the work
+honestly; or nothing, "base: none") with the attack appended, after any
+shared part it names with "uses: FILE" (protocol-hijack.inc: the candidate's
+side of the judge's protocol, taken over). The attack knows the
 real paths of the repository, the build and results.json (@ROOT@, @BUILD@,
 @OUT@: the worst case) and of listeners this script keeps open (@PORT@ on
 127.0.0.1, the abstract Unix socket @ABSTRACT@). Every attack must score
@@ -37,6 +40,7 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
+import pathlab_tasks  # noqa: E402
 from pathlab_tasks import commit_random  # noqa: E402
 
 root, build, grade_build = (Path(a).resolve() for a in sys.argv[1:4])
@@ -54,6 +58,7 @@ TIMEOUT, TASK_BUDGET = 3, 12  # seconds per test case and for the task (sleep-to
 MEMORY_LIMIT = 1 << 30        # the submission's memory limit in this suite (PATHLAB_SANDBOX_MEMORY)
 MEMORY_SLACK = 512 << 20      # what 50 ms between the grader's polls may add, with margin
 GRADER_MEMORY = 1 << 30       # the grader's side: a linker and a judge fit in far less
+ANSWER_READER_MEMORY = 400 << 20  # huge-answer: the judge reads no answer longer than its request allows
 # A line of the reference's task 1 that the stub does not have.
 SECRET = "basis.right = glm::normalize(right);"
 # A world-readable file outside the framework (@LEAK@) and a variable in the
@@ -72,9 +77,20 @@ def tree_digest() -> str:
     return h.hexdigest()
 
 
-def judge_digest() -> str:
-    judge = grade_build / "tests" / "test-01-camera-rays"
+TASKS = pathlab_tasks.tasks()  # {n: (folder, file)}
+
+
+def judge_digest(task=1) -> str:
+    judge = grade_build / "tests" / f"test-{TASKS[task][0]}"
     return hashlib.sha256(judge.read_bytes()).hexdigest() if judge.exists() else "none"
+
+
+def judge_points(task) -> int:
+    """The task's points as its judge lists them (every attack on it must see the same manifest)."""
+    judge = grade_build / "tests" / f"test-{TASKS[task][0]}"
+    subprocess.run(["cmake", "--build", str(grade_build), "--target", judge.name], capture_output=True, timeout=1500)
+    listing = subprocess.run([str(judge), "--list-test-cases"], capture_output=True, text=True, timeout=60).stdout
+    return sum(int(m.group(1)) for m in re.finditer(r"^TEST (\d+) ", listing, re.M))
 
 
 def sandbox_processes():
@@ -220,23 +236,29 @@ def main() -> int:
     if not full or json.loads(warm.read_text())["score"] != full:
         failures.append(f"reference: not full marks with --sandbox {sandbox}")
     before_tree = tree_digest()
-    judge_before = judge_digest()
+    judges_before, full_points = {1: judge_digest()}, {1: full}
     for attack in attacks:
         text = attack.read_text()
-        header = re.search(r"// base: (\w+)\s+expect: (\w+)", text)
-        base, expect = header.group(1), header.group(2)
+        header = re.search(r"// (?:task: (\d+)\s+)?base: (\w+)\s+expect: (\w+)(?:\s+uses: (\S+))?", text)
+        task, base, expect, uses = int(header.group(1) or 1), header.group(2), header.group(3), header.group(4)
+        if task not in full_points:
+            full_points[task] = judge_points(task)
+            judges_before[task] = judge_digest(task)
+        directory, file_name = TASKS[task]
+        if uses:
+            text = (root / "tests/grader/attacks" / uses).read_text() + "\n" + text
         out = work / f"{attack.stem}.json"
         values = {"@ROOT@": str(root), "@BUILD@": str(grade_build), "@OUT@": str(out), "@LEAK@": str(LEAK_FILE),
                   "@PORT@": str(tcp.server.getsockname()[1]), "@ABSTRACT@": abstract_name}
         body = re.sub("|".join(values), lambda m: values[m.group(0)], text)
         prefix = "" if base == "none" else \
-            (root / ("solutions" if base == "reference" else "tasks") / "01-camera-rays/camera_rays.cpp").read_text()
+            (root / ("solutions" if base == "reference" else "tasks") / directory / file_name).read_text()
         submission = work / attack.stem
         submission.mkdir()
-        (submission / "camera_rays.cpp").write_text(prefix + "\n" + body)
+        (submission / file_name).write_text(prefix + "\n" + body)
         start = time.time()
         received_before = len(tcp.received) + len(local.received)
-        grade = subprocess.Popen([sys.executable, str(root / "tools/grade"), str(submission), "--tasks", "1",
+        grade = subprocess.Popen([sys.executable, str(root / "tools/grade"), str(submission), "--tasks", str(task),
                                   "--out", str(out), "--build-dir", str(grade_build), "--timeout", str(TIMEOUT),
                                   "--task-budget", str(TASK_BUDGET), "--sandbox", sandbox], stdout=subprocess.PIPE,
                                  stderr=subprocess.PIPE, text=True, env=grader_env)
@@ -251,8 +273,9 @@ def main() -> int:
         problems = []
         if sampler.sandbox_peak > MEMORY_LIMIT + MEMORY_SLACK:
             problems.append(f"the sandbox held {sampler.sandbox_peak / 2**30:.2f} GB (limit {MEMORY_LIMIT / 2**30:.1f} GB)")
-        if sampler.grader_peak > GRADER_MEMORY:
-            problems.append(f"the grader's side held {sampler.grader_peak / 2**30:.2f} GB")
+        grader_memory = ANSWER_READER_MEMORY if attack.stem == "huge-answer" else GRADER_MEMORY
+        if sampler.grader_peak > grader_memory:
+            problems.append(f"the grader's side held {sampler.grader_peak / 2**20:.0f} MB (limit {grader_memory >> 20} MB)")
         if len(tcp.received) + len(local.received) > received_before:
             problems.append("a listener outside the sandbox was reached: "
                             + repr((tcp.received + local.received)[-1][:80]))
@@ -264,8 +287,8 @@ def main() -> int:
             report = json.loads(report_text)
             points = sum(t["max_score"] for t in report["tests"])
             wanted = points if expect == "full" else 0
-            if points != full:
-                problems.append(f"the task's manifest changed: {points} points instead of {full}")
+            if points != full_points[task]:
+                problems.append(f"the task's manifest changed: {points} points instead of {full_points[task]}")
             if report["score"] != wanted:
                 problems.append(f"scored {report['score']:g}, expected {wanted}")
             if SECRET in report_text:
@@ -284,6 +307,10 @@ def main() -> int:
                 problems.append("the compile's time limit is not reported")
             if attack.stem == "memory-in-children" and "processes together used" not in report_text:
                 problems.append("the memory limit is not reported")
+            if attack.stem == "huge-answer" and "the most a right answer to this request takes" not in report_text:
+                problems.append("the answer's length was not refused against its request")
+            if attack.stem == "image-size-lie" and "the request asked for" not in report_text:
+                problems.append("the image's size was not checked against its request")
             if attack.stem == "daemon":
                 time.sleep(3)  # the daemon would rewrite results.json every second
                 if hashlib.sha256(out.read_bytes()).hexdigest() != digest:
@@ -292,7 +319,7 @@ def main() -> int:
                 problems.append(f"results.json is {len(report_text)} bytes: output not clipped")
         if seconds > TASK_BUDGET + 60:
             problems.append(f"the grade took {seconds:.0f} s (budget {TASK_BUDGET} s)")
-        if judge_digest() != judge_before:
+        if judge_digest(task) != judges_before[task]:
             problems.append("the judge binary changed")
         left = sandbox_processes()
         time.sleep(1)  # a chain of forks may be between two of its processes

@@ -26,6 +26,7 @@ class Rig {
     return c;
   }
   const Scene& scene() const { return *scene_; }
+  const Lights& lights() const { return lights_; }
 
  private:
   std::unique_ptr<Scene> scene_;
