@@ -37,6 +37,10 @@ struct Strategy {
   bool framework = false;  // run by the framework's path tracer (render/strategies.h), not tracePath
 };
 
+constexpr const char* kStrategyNames[] = {"reference", "cosine", "uniform-hemisphere", "nee", "no-nee", "rr", "no-rr",
+                                          "light", "bsdf", "mis-balance", "mis-power", "env-importance", "env-uniform",
+                                          "independent", "stratified", "adaptive"};
+
 // Each strategy changes one thing from the default (the course's recipe).
 // The sampling strategies are the framework's path tracer, assembled from
 // the tasks' pieces (BRDF, ray offset, light directions, diffuse sampling,
@@ -100,11 +104,24 @@ Strategy strategy(const std::string& name) {
                   "a sixteenth of it, batches of 16)", adaptive.tolerance);
     s.change = what;
   } else {
-    throw Error("--strategies: unknown strategy \"" + name +
-                "\" (reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, light, bsdf, mis-balance, mis-power, "
-                "env-importance, env-uniform, independent, stratified, adaptive, adaptive-TOL)");
+    std::string names;
+    for (const char* known : kStrategyNames) names += std::string(known) + ", ";
+    throw Error("--strategies: unknown strategy \"" + name + "\" (" + names + "adaptive-TOL)");
   }
   return s;
+}
+
+// A strategy `scene` cannot render (mediaProblem: a scene with media takes
+// task 12's path tracer only), said with this program's flags before
+// anything renders.
+void checkStrategyFits(const char* flag, const Strategy& s, const Scene& scene, const std::string& sceneName) {
+  if (mediaProblem(scene, s.options).empty()) return;
+  std::string fitting;
+  for (const char* name : kStrategyNames) {
+    if (mediaProblem(scene, strategy(name).options).empty()) fitting += std::string(fitting.empty() ? "" : ", ") + name;
+  }
+  throw Error(std::string(flag) + " " + s.name + ": " + sceneName + " has media, which only task 12's path tracer "
+              "renders, with its own sampling (the strategies that take it: " + fitting + ")");
 }
 
 // The probe: a small render of the scene with the strategy's change and
@@ -333,6 +350,8 @@ int runConvergeBench(const ConvergeOptions& options) {
   std::vector<Strategy> strategies;
   std::stringstream list(options.strategies);
   for (std::string name; std::getline(list, name, ',');) strategies.push_back(strategy(name));
+  for (const Strategy& s : strategies) checkStrategyFits("--strategies", s, scene, options.scene);
+  checkStrategyFits("--reference-strategy", strategy(options.referenceStrategy), scene, options.scene);
   // Every render walks the tree as `pathlab` would with this build (its
   // --accel default), so that the seconds here are a user's seconds.
   RenderOptions defaults;

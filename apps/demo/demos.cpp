@@ -1,6 +1,8 @@
 #include "demos.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 
@@ -28,6 +30,27 @@ std::string figurePath(const std::string& out, const std::string& name) {
   return out + ".png";
 }
 
+namespace {
+
+std::string shownNumber(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", v);
+  return buffer;
+}
+
+std::string choicesOf(const Parameter& p) {
+  const std::string names = choiceNames(p);
+  return names.empty() ? names : " (" + names + ")";
+}
+
+}  // namespace
+
+std::string choiceNames(const Parameter& p) {
+  std::string list;
+  for (size_t k = 0; k < p.choices.size(); ++k) list += (k ? ", " : "") + std::to_string(k) + " " + p.choices[k];
+  return list;
+}
+
 Values parseSettings(const std::string& owner, const std::vector<Parameter>& parameters,
                      const std::vector<std::string>& settings) {
   Values values;
@@ -42,17 +65,26 @@ Values parseSettings(const std::string& owner, const std::vector<Parameter>& par
       for (const Parameter& p : parameters) names += (names.empty() ? "" : ", ") + p.name;
       throw Error("--set " + setting + ": " + owner + " has the parameters " + names + " (--set NAME=VALUE)");
     }
+    const std::string text = setting.substr(equals + 1);
+    const auto choice = std::find(known->choices.begin(), known->choices.end(), text);
     double value = 0.0;
-    try {
-      size_t used = 0;
-      value = std::stod(setting.substr(equals + 1), &used);
-      if (used != setting.size() - equals - 1) throw std::invalid_argument("trailing characters");
-    } catch (const std::exception&) {
-      throw Error("--set " + setting + ": \"" + setting.substr(equals + 1) + "\" is not a number");
+    if (choice != known->choices.end()) {
+      value = double(choice - known->choices.begin());
+    } else {
+      try {
+        size_t used = 0;
+        value = std::stod(text, &used);
+        if (used != text.size()) throw std::invalid_argument("trailing characters");
+      } catch (const std::exception&) {
+        throw Error("--set " + setting + ": \"" + text + "\" is not a number" + choicesOf(*known));
+      }
     }
     if (!(value >= known->min && value <= known->max)) {
-      throw Error("--set " + setting + ": " + name + " must be between " + std::to_string(known->min) + " and " +
-                  std::to_string(known->max));
+      throw Error("--set " + setting + ": " + name + " must be between " + shownNumber(known->min) + " and " +
+                  shownNumber(known->max) + choicesOf(*known));
+    }
+    if ((known->integer || !known->choices.empty()) && value != std::floor(value)) {
+      throw Error("--set " + setting + ": " + name + " takes whole numbers" + choicesOf(*known));
     }
     values[name] = value;
   }

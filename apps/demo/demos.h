@@ -18,9 +18,15 @@ struct Parameter {
   bool integer = false;
   bool logarithmic = false;  // slider spacing
   std::string help;
+  // A choice among names: value k is choices[k] (min 0, max the last), and
+  // --set NAME=CHOICE takes the name as well as the number.
+  std::vector<std::string> choices{};
 };
 
 using Values = std::map<std::string, double>;
+
+// "0 independent, 1 stratified, 2 sobol": a choice's values and names ("" for a number).
+std::string choiceNames(const Parameter& p);
 
 struct DemoResult {
   Figure figure;

@@ -12,6 +12,7 @@
 #include "demo_support.h"
 #include "util/error.h"
 #include "util/image.h"
+#include "util/output_file.h"
 #include "util/random.h"
 
 namespace pathlab::lab {
@@ -183,7 +184,8 @@ const char* sequenceName(SampleSequence sequence) {
 std::vector<demo::Parameter> parametersOf(const Warp& warp) {
   std::vector<demo::Parameter> parameters = {
       {"samples", 100000, 1000, 4e6, true, true, "points drawn"},
-      {"sequence", 0, 0, 2, true, false, "0 independent, 1 stratified, 2 Sobol (the test assumes independent)"},
+      {"sequence", 0, 0, 2, true, false, "the points' sequence (the test assumes independent)",
+       {"independent", "stratified", "sobol"}},
       // Seed 3: with every default, each warp's reference sits far from the
       // rejection tail (smallest p 0.46; seed 1 gave the annulus p = 0.0005).
       // Any seed rejects a correct warp in 1 run in 1000 (docs/debugger.md).
@@ -448,7 +450,9 @@ int runLab(const LabArgs& args) {
   const demo::Values values = demo::parseSettings(warp->name, parametersOf(*warp), args.settings);
   if (args.params) {
     for (const demo::Parameter& p : parametersOf(*warp)) {
-      std::printf("%-10s %-8g [%g, %g]  %s\n", p.name.c_str(), p.value, p.min, p.max, p.help.c_str());
+      const std::string names = demo::choiceNames(p);
+      std::printf("%-10s %-8g [%g, %g]  %s%s\n", p.name.c_str(), p.value, p.min, p.max, p.help.c_str(),
+                  names.empty() ? "" : (": " + names).c_str());
     }
     return 0;
   }
@@ -457,13 +461,18 @@ int runLab(const LabArgs& args) {
   if (!args.map.empty() && !warp->takesEnvironmentMap) {
     throw Error("lab: --map is for the environment warp (" + warp->name + " reads no map)");
   }
+  // Every output checked before anything is written: a table that cannot
+  // be written must not leave the figure behind, nor one file replace another.
+  if (!figure.empty()) checkOutputFile("-o", figure, OutputKind::Image);
+  if (args.csv) checkOutputFile("--csv", *args.csv, OutputKind::Text);
+  checkDistinctFiles({{"-o", figure}, {"--csv", args.csv.value_or("")}, {"--map", args.map}});
   const LabResult result = runWarp(*warp, values, WarpFiles{args.map});
-  if (!figure.empty()) demo::writeFigure(result.shown.figure, figure);
-  if (!args.csv.empty()) {
-    std::ofstream csv(args.csv);
+  if (args.csv) {
+    std::ofstream csv(*args.csv);
     csv << result.csv;
-    if (!csv) throw Error("--csv " + args.csv + ": cannot write it");
+    if (!csv.flush()) throw Error("--csv " + shown(*args.csv, 200) + ": cannot write it");
   }
+  if (!figure.empty()) demo::writeFigure(result.shown.figure, figure);
   if (!figure.empty()) std::printf("%s\n", figure.c_str());
   std::printf("%s", result.shown.numbers.c_str());
   return 0;

@@ -90,7 +90,8 @@ LabResult runWarp(const Warp& warp, const demo::Values& values, const WarpFiles&
 
 // `pathlab lab` (lab_cli.h has its options).
 struct LabArgs {
-  std::string warp, output, csv, map;
+  std::string warp, output, map;
+  std::optional<std::string> csv;  // given but empty is an error
   std::vector<std::string> settings;
   bool list = false, params = false, noFigure = false;
 };

@@ -22,7 +22,10 @@ inline bool drawParameterSliders(const std::vector<Parameter>& parameters, Value
     const ImGuiSliderFlags flags = parameter.logarithmic ? ImGuiSliderFlags_Logarithmic : 0;
     if (parameter.integer) {
       int v = int(std::lround(value));
-      if (ImGui::SliderInt(parameter.name.c_str(), &v, int(parameter.min), int(parameter.max), "%d", flags)) {
+      // A choice shows its name (names have no '%', which ImGui would read as a format).
+      const bool named = v >= 0 && size_t(v) < parameter.choices.size();
+      if (ImGui::SliderInt(parameter.name.c_str(), &v, int(parameter.min), int(parameter.max),
+                           named ? parameter.choices[size_t(v)].c_str() : "%d", flags)) {
         value = v, changed = true;
       }
     } else {

@@ -19,6 +19,7 @@
 #include "scene/scene_io.h"
 #include "task_summary.h"
 #include "util/error.h"
+#include "util/output_file.h"
 #include "util/platform.h"
 #include "util/progress.h"
 
@@ -32,13 +33,13 @@ struct RenderArgs {
   std::optional<double> aperture, focalDistance;  // task 10's lens, over the scene's
   std::optional<double> adaptive;                 // task 11: the tolerance; -s is then the maximum
   std::optional<int> minSpp, batch;
-  std::string sppMap;  // empty: beside the output, NAME.spp.png
+  std::optional<std::string> sppMap;  // absent: beside the output, NAME.spp.png (given but empty is an error)
   std::optional<std::string> resolution;  // -d WxH (given but empty is an error)
   std::vector<int> widthHeight;    // -r W H
   std::string output = "render.png";
   std::string seed;  // parsed by parseSeed: CLI11 would wrap "-1" to 2^64 - 1
-  std::string reference;
-  std::string stats;  // --stats FILE.json: the summary's numbers for scripts (tools/writeup)
+  std::optional<std::string> reference;
+  std::optional<std::string> stats;  // --stats FILE.json: the summary's numbers for scripts (tools/writeup)
   std::string integrator = "path";
   std::string accel;  // empty: defaultTraversal
   std::string sampler = "sobol";
@@ -87,33 +88,6 @@ uint64_t parseSeed(const std::string& text) {
   return seed;
 }
 
-// Fail before rendering, not after an hour, when the output cannot be written.
-// (The platform's look-ups, not std::filesystem's: those throw on a symlink
-// loop or a name too long, which must be an error line, not an internal error.)
-void checkOutputPath(const std::string& path) {
-  const std::string name = shown(path, 200);
-  if (path.empty()) throw Error("-o: expected an output file name");
-  if (!isWritableImagePath(path)) throw Error(name + ": unsupported output format (use .png, .exr, .hdr or .jpg)");
-  std::string parent = std::filesystem::path(path).parent_path().string();
-  if (parent.empty()) parent = ".";
-  const FileStatus folder = fileStatus(parent);
-  if (!folder.found) {
-    throw Error(name + ": output folder " + (folder.missing ? "does not exist" : "cannot be used: " + folder.error));
-  }
-  if (folder.kind != FileKind::Folder) throw Error(name + ": output folder does not exist (" + shown(parent) + " is not a folder)");
-  if (!folderIsWritable(parent)) throw Error(name + ": output folder is not writable");
-  const FileStatus output = fileStatus(path);
-  if (output.found) {
-    if (output.kind == FileKind::Folder) throw Error(name + ": is a folder, expected an image file name");
-  } else if (!output.missing) {
-    throw Error(name + ": cannot write: " + output.error);
-  }
-  if (std::filesystem::path(path).filename().string().size() + 9 > maxFileNameBytes()) {  // + ".partial" and the dot
-    throw Error(name + ": file name too long (the temporary name it is written through must fit " +
-                std::to_string(maxFileNameBytes()) + " bytes)");
-  }
-}
-
 int checkedCount(const char* flag, int value, int min, int max) {
   if (value < min || value > max) {
     throw Error(std::string(flag) + ": expected a value in [" + std::to_string(min) + ", " +
@@ -155,6 +129,10 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   if (!integrator) throw Error("--integrator: unknown integrator " + inQuotes(args.integrator) +
                                " (path, direct, preview, normals, mis, mis-balance, light, bsdf)");
   options.integrator = *integrator;
+  if (const std::string problem = mediaProblem(scene, options); !problem.empty()) {
+    throw Error("--integrator " + args.integrator + ": " + scene.source + " has media, which only task 12's path "
+                "tracer renders (--integrator path; preview and normals look without them)");
+  }
   options.traversal = defaultTraversal(linkedTaskSummary());
   if (!args.accel.empty()) {
     auto traversal = traversalFromName(args.accel);
@@ -164,8 +142,8 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   const std::optional<SampleSequence> sampler = sampleSequenceFromName(args.sampler);
   if (!sampler) throw Error("--sampler: unknown sampler " + inQuotes(args.sampler) + " (sobol, stratified, independent)");
   options.sampler = *sampler;
-  checkOutputPath(args.output);
-  if (!args.adaptive && (args.minSpp || args.batch || !args.sppMap.empty())) {
+  checkOutputFile("-o", args.output, OutputKind::Image);
+  if (!args.adaptive && (args.minSpp || args.batch || args.sppMap)) {
     throw Error("--min-spp, --batch and --spp-map go with --adaptive TOLERANCE");
   }
   std::string sppMapPath;
@@ -188,23 +166,27 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
       throw Error("--adaptive: " + problem + given);
     }
     options.adaptive = adaptive;
-    sppMapPath = args.sppMap.empty() ? sppMapBeside(args.output) : args.sppMap;
-    checkOutputPath(sppMapPath);
+    sppMapPath = args.sppMap ? *args.sppMap : sppMapBeside(args.output);
+    checkOutputFile("--spp-map", sppMapPath, OutputKind::Image);
   }
+  if (args.stats) checkOutputFile("--stats", *args.stats, OutputKind::Text);
+  if (args.reference && args.reference->empty()) throw Error("--ref: expected an image file name");
+  checkDistinctFiles({{"-o", args.output}, {"--spp-map", sppMapPath}, {"--stats", args.stats.value_or("")},
+                      {"--ref", args.reference.value_or("")}});
   std::optional<Image> reference;  // read and checked before an hour of rendering, not after
-  if (!args.reference.empty()) {
-    reference = readImage(args.reference);
+  if (args.reference) {
+    reference = readImage(*args.reference);
     if (reference->width != settings.width || reference->height != settings.height) {
-      throw Error("--ref: " + shown(args.reference, 200) + " is " + std::to_string(reference->width) + "x" +
+      throw Error("--ref: " + shown(*args.reference, 200) + " is " + std::to_string(reference->width) + "x" +
                   std::to_string(reference->height) + " but the render is " + std::to_string(settings.width) + "x" +
                   std::to_string(settings.height));
     }
   }
 
   std::ofstream statsFile;  // opened before an hour of rendering, not after
-  if (!args.stats.empty()) {
-    statsFile.open(args.stats);
-    if (!statsFile) throw Error("--stats " + shown(args.stats, 200) + ": cannot write it");
+  if (args.stats) {
+    statsFile.open(*args.stats);
+    if (!statsFile) throw Error("--stats " + shown(*args.stats, 200) + ": cannot write it");
   }
 
   rendering.store(true);
@@ -247,9 +229,9 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   std::optional<ImageError> error;
   if (reference) {
     error = compareImages(result.image, *reference);
-    std::printf("vs %s: RMSE %.6g, relMSE %.6g\n", args.reference.c_str(), error->rmse, error->relMse);
+    std::printf("vs %s: RMSE %.6g, relMSE %.6g\n", args.reference->c_str(), error->rmse, error->relMse);
   }
-  if (!args.stats.empty()) {
+  if (args.stats) {
     nlohmann::json j = {{"output", args.output}, {"scene", scene.source}, {"width", settings.width},
                         {"height", settings.height}, {"spp", stats.completedSpp}, {"max_depth", settings.maxDepth},
                         {"light_samples", settings.lightSamples}, {"integrator", integratorName(options.integrator)},
@@ -262,7 +244,7 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
                         {"non_finite_samples", stats.nonFiniteSamples}};
     if (error) j["vs_reference"] = {{"rmse", error->rmse}, {"rel_mse", error->relMse}};
     statsFile << j.dump(2) << "\n";
-    if (!statsFile.flush()) throw Error("--stats " + shown(args.stats, 200) + ": cannot write it");
+    if (!statsFile.flush()) throw Error("--stats " + shown(*args.stats, 200) + ": cannot write it");
   }
   return 0;
 }
@@ -292,7 +274,7 @@ int runDebug(const DebugArgs& args) {
   std::string output = args.output.empty()
                            ? "debug-task" + std::to_string(args.task) + "-" + args.view + ".png"
                            : args.output;
-  checkOutputPath(output);
+  checkOutputFile("-o", output, OutputKind::Image);
   DebugViewRequest request(scene, scene.render.width, scene.render.height);
   if (args.threads) request.threads = checkedCount("-t", *args.threads, 1, 1024);
   if (args.depth) request.depth = checkedCount("--depth", *args.depth, 0, 64);

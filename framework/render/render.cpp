@@ -170,18 +170,23 @@ void RenderCounters::report(RenderStats& stats, int width) const {
   }
 }
 
-namespace {
-
 // Media (task 12) need task 12's path tracer: the other estimators know
 // nothing of them. The shading previews ignore them, and may look.
-const RenderOptions& checkMedia(const Scene& scene, const RenderOptions& options) {
+std::string mediaProblem(const Scene& scene, const RenderOptions& options) {
   const bool preview = options.integrator == Integrator::Preview || options.integrator == Integrator::Normals;
-  if (scene.hasMedia() && !options.estimator && !preview &&
-      (options.integrator != Integrator::Path || !options.strategy.isRecipe())) {
-    throw Error(scene.source + ": a scene with media renders with task 12's path tracer only (--integrator path, "
-                "the default strategy), not --integrator " + integratorName(options.integrator) +
-                (options.strategy.isRecipe() ? "" : " with another sampling strategy"));
+  if (!scene.hasMedia() || options.estimator || preview ||
+      (options.integrator == Integrator::Path && options.strategy.isRecipe())) {
+    return "";
   }
+  return "a scene with media renders with task 12's path tracer only (the path integrator with its default "
+         "sampling strategy), not the " + std::string(integratorName(options.integrator)) + " integrator" +
+         (options.strategy.isRecipe() ? "" : " with another sampling strategy");
+}
+
+namespace {
+
+const RenderOptions& checkMedia(const Scene& scene, const RenderOptions& options) {
+  if (const std::string problem = mediaProblem(scene, options); !problem.empty()) throw Error(scene.source + ": " + problem);
   return options;
 }
 

@@ -114,7 +114,14 @@ struct RenderResult {
 Color estimateRadiance(TraceContext& context, const RenderOptions& options, const Ray& ray, Sampler& sampler);
 
 // Every pixel at scene.render.samplesPerPixel, or adaptively (options.adaptive).
+// Throws an Error for options the scene cannot render with (mediaProblem).
 RenderResult render(const Scene& scene, const RenderOptions& options);
+
+// Why `options` cannot render `scene`, or "": a scene with media (task 12)
+// renders with task 12's path tracer only (the path integrator, its default
+// sampling strategy), or with a shading preview. Said in the framework's
+// words, not a program's flags: each program checks first and names its own.
+std::string mediaProblem(const Scene& scene, const RenderOptions& options);
 
 class ProgressBar;
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -44,6 +45,20 @@ inline std::string indexed(const std::string& path, size_t i) { return path + "[
 size_t editDistance(const std::string& a, const std::string& b);
 // Keys longer than this get no did-you-mean (edit distance is quadratic).
 inline constexpr size_t kMaxSuggestedKey = 64;
+
+// The values a number may take: [min, max], without an end that is open.
+// Every bounded field of a scene says its range through this one type, so
+// that each is checked, and reported, the same way.
+struct Range {
+  double min, max;
+  bool minOpen = false, maxOpen = false;
+  bool holds(double v) const { return (minOpen ? v > min : v >= min) && (maxOpen ? v < max : v <= max); }
+  std::string text() const {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%c%g, %g%c", minOpen ? '(' : '[', min, max, maxOpen ? ')' : ']');
+    return buffer;
+  }
+};
 
 // A JSON object whose keys are checked against the allowed ones, with typed
 // accessors that name the field in every error.
@@ -84,6 +99,22 @@ class Object {
 
   float number(const std::string& key, float fallback) const {
     return has(key) ? toFloat(at(key), field(key)) : fallback;
+  }
+
+  // A number within `range` (the fallback when the key is absent).
+  float number(const std::string& key, float fallback, const Range& range) const {
+    const float value = number(key, fallback);
+    if (has(key) && !range.holds(value)) fail(field(key), "expected a number in " + range.text() + ", got " + at(key).dump());
+    return value;
+  }
+
+  // A colour whose components each lie within `range`.
+  Color color(const std::string& key, Color fallback, const Range& range) const {
+    const Color c = vec3(key, fallback);
+    if (has(key) && !(range.holds(c.x) && range.holds(c.y) && range.holds(c.z))) {
+      fail(field(key), "expected components in " + range.text() + ", got " + at(key).dump());  // 3 numbers
+    }
+    return c;
   }
 
   float positive(const std::string& key, float fallback) const {

@@ -24,6 +24,7 @@ using json::describe;
 using json::indexed;
 using json::Json;
 using json::Object;
+using json::Range;
 using json::Source;
 namespace fs = std::filesystem;
 
@@ -79,12 +80,14 @@ RenderSettings parseRender(const Object& o) {
 
 // ---- materials --------------------------------------------------------------
 
-// A rough material's perceptual roughness, in [0, 1] (alpha = roughness^2, task 8).
-float roughnessOf(const Object& o) {
-  const float r = o.number("roughness", 0.5f);
-  if (!(r >= 0.0f && r <= 1.0f)) o.fail(o.field("roughness"), "expected a number in [0, 1], got " + o.at("roughness").dump());
-  return r;
-}
+// The ranges of the materials' and the media's numbers (tasks 8 and 12).
+// A conductor's eta is at least 1e-3 (real metals: 0.03 and up): below
+// about 1e-19 with k = 0, n^2 underflows in float and Fresnel is NaN.
+constexpr Range kRoughness{0.0, 1.0}, kEta{1e-3, 1e3}, kExtinctionIndex{0.0, 1e3};
+constexpr Range kPhaseG{-1.0, 1.0, true, true};
+
+// A rough material's perceptual roughness (alpha = roughness^2, task 8).
+float roughnessOf(const Object& o) { return o.number("roughness", 0.5f, kRoughness); }
 
 // ---- media (task 12) -----------------------------------------------------------
 
@@ -115,8 +118,7 @@ Medium parseMedium(const Source& source, const Json& j, const std::string& path,
     m.albedo = o.color("albedo", m.albedo, 1.0f);
   }
   if (!(m.sigmaT <= kMaxSceneCoordinate)) o.fail(path, "an extinction above 1e12 per unit length");
-  m.g = o.number("g", 0.0f);
-  if (!(m.g > -1.0f && m.g < 1.0f)) o.fail(o.field("g"), "expected a number in (-1, 1), got " + o.at("g").dump());
+  m.g = o.number("g", 0.0f, kPhaseG);
   return m;
 }
 
@@ -132,10 +134,28 @@ MediumIndex mediumNamed(const Object& o, const std::string& key, const MediumNam
                            (known.empty() ? " (the scene defines no media)" : " (defined: " + known + ")"));
 }
 
+constexpr const char* kMaterialTypes[] = {"diffuse", "mirror", "glass", "conductor", "plastic", "interface"};
+
+// A material's "type", checked before its other keys (which depend on it).
+std::string materialType(const Source& source, const Json& j, const std::string& path) {
+  if (!j.is_object() || !j.contains("type")) return "diffuse";
+  std::string expected;
+  for (const char* type : kMaterialTypes) expected += std::string(expected.empty() ? "" : ", ") + inQuotes(type);
+  const Json& type = j["type"];
+  if (!type.is_string()) {
+    throw Error(source.name + ": " + path + ".type: expected a string (" + expected + "), got " + describe(type));
+  }
+  const std::string name = type.get<std::string>();
+  if (std::find(std::begin(kMaterialTypes), std::end(kMaterialTypes), name) == std::end(kMaterialTypes)) {
+    throw Error(source.name + ": " + path + ".type: unknown material type " + inQuotes(name) + " (expected " +
+                expected + ")");
+  }
+  return name;
+}
+
 Material parseMaterial(const Source& source, const Json& j, const std::string& path, const std::string& name,
                        const MediumNames& media) {
-  std::string type = j.is_object() && j.contains("type") && j["type"].is_string() ? j["type"].get<std::string>()
-                                                                                 : "diffuse";
+  const std::string type = materialType(source, j, path);
   Material m;
   m.name = name;
   if (type == "interface") {
@@ -172,9 +192,8 @@ Material parseMaterial(const Source& source, const Json& j, const std::string& p
     if (o.has("eta") && o.has("f0")) o.fail(o.field("f0"), "give either f0 (Schlick) or eta and k (exact), not both");
     if (o.has("eta")) {
       m.exactFresnel = true;
-      m.eta = o.color("eta", Color(1.0f));
-      m.k = o.color("k", Color(0.0f));
-      if (!(std::min({m.eta.x, m.eta.y, m.eta.z}) > 0.0f)) o.fail(o.field("eta"), "expected positive components, got " + o.at("eta").dump());
+      m.eta = o.color("eta", Color(1.0f), kEta);
+      m.k = o.color("k", Color(0.0f), kExtinctionIndex);
     }
     m.emission = o.color("emission", m.emission);
   } else if (type == "plastic") {
@@ -184,10 +203,6 @@ Material parseMaterial(const Source& source, const Json& j, const std::string& p
     m.albedo = o.color("albedo", Color(0.5f), 1.0f);
     m.ior = o.positive("ior", 1.5f);
     m.emission = o.color("emission", m.emission);
-  } else {
-    Object o(source, j, path, {"type"});  // reports a non-object or a non-string type first
-    o.fail(o.field("type"), "unknown material type " + inQuotes(j["type"].get<std::string>()) +
-                                " (expected \"diffuse\", \"mirror\", \"glass\", \"conductor\", \"plastic\" or \"interface\")");
   }
   return m;
 }

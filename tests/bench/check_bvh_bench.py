@@ -266,6 +266,14 @@ for args in (["render", "--spp", "0"], ["render", "--threads", "-2"], ["bvh", "-
     option = next(a for a in args if a.startswith("--"))
     check(out.returncode == 1 and option in out.stderr and "must be" in out.stderr,
           f"{' '.join(args)}: exit {out.returncode}, stderr {out.stderr[-200:]!r}")
+# A scene with media takes task 12's path tracer only: said in this program's flags, before any render.
+with tempfile.TemporaryDirectory(prefix="pathlab-bench-media-") as tmp:
+    fog = os.path.join(SOURCE, "media", "scenes", "fog-shafts.json")
+    for flag, name in (("--strategies", "mis-power"), ("--reference-strategy", "no-rr")):
+        out = run(["converge", fog, flag, name, "--budget", "0.2", "--out", tmp], 60)
+        check(out.returncode == 1 and f"{flag} {name}: " in out.stderr and "--integrator" not in out.stderr and
+              len(out.stderr.strip().splitlines()) == 1 and not os.listdir(tmp),
+              f"converge {flag} {name} on a scene with media: exit {out.returncode}, stderr {out.stderr[-300:]!r}")
 envmap = os.path.join(os.path.dirname(os.path.abspath(bench)), "pathlab-envmap")
 if os.path.exists(envmap):
     with tempfile.TemporaryDirectory(prefix="pathlab-envmap-") as tmp:

@@ -208,6 +208,12 @@ bad_input "a 300-character scene name" "File name too long" "$g/$long.json"
 bad_input "a 300-character output name" "too long" -o "$work/$long.png"
 bad_input "--seed -1" "--seed: expected an integer" --seed -1
 bad_input "-d with an empty value" "-d: expected WIDTHxHEIGHT" -d ""
+bad_input "--spp-map with an empty value" "--spp-map: expected an output file name" --adaptive 0.1 --spp-map ""
+bad_input "--stats with an empty value" "--stats: expected an output file name" --stats ""
+bad_input "--ref with an empty value" "--ref: expected an image file name" --ref ""
+# Two names of one file (a hard link): the render would overwrite its own reference.
+"$pathlab" -q -s 1 -d 16x12 -o "$work/linked.exr" 2>/dev/null && ln "$work/linked.exr" "$work/link-of-linked.exr"
+bad_input "--ref a hard link of -o" "-o and --ref name the same file" --ref "$work/link-of-linked.exr" -o "$work/linked.exr"
 "$pathlab" -q -s 1 -d 20x10 -o "$work/small.exr" 2>/dev/null
 bad_input "--ref of another size (before rendering: no output)" "--ref: " --ref "$work/small.exr"
 bad_input "--stats in a missing folder (before rendering)" "--stats " --stats "$work/no-such-folder/stats.json"

@@ -159,10 +159,29 @@ def main() -> int:
                      (["lab", "annulus", "--set", "colour=1"], "has the parameters"),
                      (["lab", "annulus", "--map", str(black)], "--map is for the environment warp"),
                      (["lab", "environment", "--map", str(SOURCE / "no-such-map.exr")], "cannot open"),
-                     (["lab", "environment", "--map", str(black)], "black everywhere")):
+                     (["lab", "environment", "--map", str(black)], "black everywhere"),
+                     (["lab", "annulus", "--set", "grid=10.5"], "grid takes whole numbers"),
+                     (["lab", "annulus", "--set", "sequence=0.5"], "sequence takes whole numbers"),
+                     (["lab", "annulus", "--csv", ""], "--csv: expected an output file name")):
         run = subprocess.run([str(pathlab), *bad, "--no-figure"], capture_output=True, text=True, timeout=60)
         if run.returncode != 1 or why not in run.stderr:
             failures.append(f"pathlab {' '.join(bad)}: exit {run.returncode}, {run.stderr.strip()[:200]!r}")
+
+    # Outputs checked before anything is written: a table that cannot be
+    # written leaves no figure, and the figure and the table may not be one file.
+    with tempfile.TemporaryDirectory(prefix="pathlab-lab-outputs-") as tmp:
+        for bad, why in ((["--csv", "/no-such-folder/cells.csv"], "output folder does not exist"),
+                         (["-o", "same.png", "--csv", "same.png"], "-o and --csv name the same file")):
+            run = subprocess.run([str(pathlab), "lab", "annulus", *bad], capture_output=True, text=True, timeout=60,
+                                 cwd=tmp)
+            left = sorted(p.name for p in Path(tmp).iterdir())
+            if run.returncode != 1 or why not in run.stderr or left:
+                failures.append(f"pathlab lab annulus {' '.join(bad)}: exit {run.returncode}, "
+                                f"{run.stderr.strip()[:200]!r}, files left: {left}")
+    named = subprocess.run([str(pathlab), "lab", "annulus", "--set", "sequence=sobol", "--no-figure"],
+                           capture_output=True, text=True, timeout=60)
+    if named.returncode != 0 or "ACCEPTED" not in named.stdout:
+        failures.append(f"pathlab lab annulus --set sequence=sobol: exit {named.returncode}, {named.stderr[:200]!r}")
 
     for f in failures:
         print("FAIL:", f)
