@@ -3,7 +3,9 @@
 candidate: the judge links the reference, so a plain intersectTriangle(...)
 in tests/02-intersection would test the reference, not the student. This
 check fails on any call of a task function in a suite's test files that is
-not written candidate::name(...) (comments and strings are ignored).
+not written candidate::name(...) (comments and strings are ignored), and on
+a suite that judges a mean by the candidate's own noise without a ceiling
+(MeanEstimate::judgeByOwnNoise, which is for the framework's own tests).
 
 usage: check_direct_calls.py TESTS_DIR FRAMEWORK_DIR"""
 import re
@@ -38,13 +40,16 @@ def main() -> int:
         for source in sorted((tests / suite).glob("test_*.cpp")):
             code = code_only(source.read_text())
             for number, line in enumerate(code.splitlines(), 1):
+                if re.search(r"\bjudgeByOwnNoise\s*\(", line):
+                    problems.append(f"{source.relative_to(tests)}:{number}: judgeByOwnNoise() judges the "
+                                    "candidate's mean by its own noise; give it a ceiling (limitNoise)")
                 for name in names:
                     for m in re.finditer(rf"(?<![\w.>:])({name})\s*\(", line):
                         problems.append(f"{source.relative_to(tests)}:{number}: {name}(...) runs the judge's "
                                         f"reference; write candidate::{name}(...)")
     for p in problems:
         print(p)
-    print(f"{len(SUITES)} suites checked: {len(problems)} direct calls of task functions")
+    print(f"{len(SUITES)} suites checked: {len(problems)} problems (direct calls of task functions, uncapped means)")
     return 1 if problems else 0
 
 

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <numeric>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -42,9 +43,23 @@ class MeanEstimate {
   // (reference_noise.h): the checks judge the mean with at most this much
   // noise, so that noise cannot buy a pass. (Not a hard limit: a correct
   // estimator's sample variance can jump with one rare, large sample.)
-  void setVarianceCeiling(double ceiling) { ceiling_ = ceiling; }
+  // Every mean that is judged has one (by construction: judgedStandardError
+  // and agrees refuse to judge without it, so a new test that forgets it
+  // fails on the reference at once).
+  void setVarianceCeiling(double ceiling) {
+    ceiling_ = ceiling;
+    capped_ = true;
+  }
+  // Only where what is measured is the framework's own code, never a
+  // candidate's answer (tests/framework): its noise is judged as it is. The
+  // suites may not call this (suites-call-the-candidate checks).
+  void judgeByOwnNoise() { setVarianceCeiling(kInfinity); }
   bool tooNoisy() const { return !(variance() <= ceiling_); }
   double judgedStandardError() const {
+    if (!capped_) {
+      throw std::logic_error("a mean judged by its own noise with no ceiling on it: the test must call limitNoise or "
+                             "setVarianceCeiling first (tests/support/reference_noise.h)");
+    }
     return n_ > 0 ? std::sqrt(std::min(variance(), ceiling_) / double(n_)) : 0.0;
   }
 
@@ -72,6 +87,7 @@ class MeanEstimate {
   double mean_ = 0.0, m2_ = 0.0;
   double min_ = 0.0, max_ = 0.0;
   double ceiling_ = kInfinity;
+  bool capped_ = false;
 };
 
 // The test itself and the direction histogram: util/chi_square.h (shared
