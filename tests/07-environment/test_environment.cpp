@@ -41,16 +41,39 @@ Point2 uvOf(const Vec3& w) {
   return Point2(float(phi / (2.0 * std::numbers::pi)), float(std::acos(std::clamp(double(w.y), -1.0, 1.0)) / std::numbers::pi));
 }
 
+// The solid-angle density that d's CDFs define at w, by the judge's own
+// arithmetic (core/environment_distribution.h's layout): row j's
+// probability times pixel i's within the row, W H per unit of (u, v), over
+// 2 pi^2 sin(theta) at w's own theta; 0 where the CDFs give nothing.
+double densityFromCdfs(const EnvironmentDistribution& d, const Vec3& w) {
+  const Point2 uv = uvOf(w);
+  const int i = std::clamp(int(double(uv.x) * d.width), 0, d.width - 1);
+  const int j = std::clamp(int(double(uv.y) * d.height), 0, d.height - 1);
+  const double row = double(d.marginalCdf[size_t(j) + 1]) - double(d.marginalCdf[size_t(j)]);
+  const float* cdf = &d.conditionalCdf[size_t(j) * size_t(d.width + 1)];
+  const double column = double(cdf[i + 1]) - double(cdf[i]);
+  // sin(theta) from x and z: from y (sqrt(1 - y^2)) it loses its digits at the poles.
+  const double sinTheta = std::hypot(double(w.x), double(w.z)) / glm::length(DVec3(w));
+  return sinTheta > 0.0 ? row * column * d.width * d.height / (2.0 * std::numbers::pi * std::numbers::pi * sinTheta)
+                        : 0.0;
+}
+
 // Chi-square of sampleEnvironment against environmentPdf over the sphere.
+// A sampler that follows its own pdf proves nothing alone (uniform
+// directions with pdf 1 / (4 pi) would): each sample's pdf must also be the
+// density the distribution's CDFs define (`*offDensity` counts those that
+// are not, within 1e-3; a direction on a pixel's edge may fall either side).
 ChiSquareResult chiSquare(const std::string& name, const EnvironmentDistribution& d, int samples, uint64_t seed,
-                          int* failed) {
+                          int* failed, int* offDensity) {
   DirectionHistogram histogram;
-  *failed = 0;
+  *failed = *offDensity = 0;
   for (const auto& s : candidate::sampleEnvironment(d, uniformPoints(samples, seed))) {
     if (!s) {
       ++*failed;
       continue;
     }
+    const double own = densityFromCdfs(d, s->direction);
+    if (!(std::abs(double(s->pdfSolidAngle) - own) <= 1e-3 * own)) ++*offDensity;
     // The histogram is over (phi, cos) of its own axes: use z as the pole.
     histogram.add(Vec3(s->direction.x, s->direction.z, s->direction.y));
   }
@@ -265,11 +288,14 @@ TEST_CASE("T7.5 importance sampling: samples follow the pdf on Mitsuba's maps (o
   single.at(13, 3) = Color(50.0f);
   for (const Image& m : {single, constantMap(100, 100), constantMap(3, 2), noisy}) {
     EnvironmentDistribution d = candidate::buildEnvironmentDistribution(m);
-    int failed = 0;
+    int failed = 0, offDensity = 0;
     const std::string name = "T7.5-map-" + std::to_string(m.width) + "x" + std::to_string(m.height);
-    ChiSquareResult r = chiSquare(name, d, 500000, 74 + uint64_t(m.width), &failed);
+    ChiSquareResult r = chiSquare(name, d, 500000, 74 + uint64_t(m.width), &failed, &offDensity);
     CAPTURE(m.width);
     CAPTURE(m.height);
+    INFO(offDensity << " of the samples have a pdf that is not the density the CDFs define: p(row) p(column | row) "
+                    "W H / (2 pi^2 sin theta)");
+    CHECK(offDensity <= 500000 / 1000);
     INFO("chi-square " << r.statistic << ", dof " << r.degreesOfFreedom << ", p = " << r.pValue << " " << r.failure
                        << "\n" << r.pictures);
     CHECK(failed < 10);
