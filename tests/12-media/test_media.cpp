@@ -273,7 +273,7 @@ TEST_CASE("T12.2 phase sampling: directions against the Henyey-Greenstein pdf, a
     CHECK(r.pValue >= kChiSquareP);
     // A cosine lies in [-1, 1]: with mean g its variance is at most
     // (1 - g)(1 + g) (Bhatia and Davis), whatever the sampler.
-    cosine.setVarianceCeiling((1.0 - g) * (1.0 + g));
+    cosine.setVarianceCeiling((1.0 - g) * (1.0 + g), "values in [-1, 1] with mean g: (1 - g)(1 + g)");
     INFO("mean cosine with the direction travelled: " << cosine.describe(g));
     CHECK(cosine.agrees(g));
   }
@@ -310,7 +310,7 @@ void checkTransmittance(const Scene& scene, const std::vector<calls::Transmittan
       if (v != 0.0f) ++notZero;
       m.add(std::isfinite(v) ? double(v) : 1e30);
     }
-    m.setVarianceCeiling(std::max(t * (1.0 - t), 1e-12));
+    m.setVarianceCeiling(std::max(t * (1.0 - t), 1e-12), "values in [0, 1] with mean T: T (1 - T)");
     const Ray& ray = std::get<0>(queries[q]);
     CAPTURE(what);
     INFO("ray from " << str(ray.origin) << " along " << str(ray.direction) << ", length " << std::get<1>(queries[q])
@@ -499,7 +499,7 @@ TEST_CASE("T12.3 direct lighting in media: through the phase function in a fog, 
         m.add(std::isfinite(value) ? double(value) : 1e30);
       }
       const double range = pointBound + 4.0 * largest;  // Le <= 4, I <= 3
-      m.setVarianceCeiling(range * range / 4.0);
+      m.setVarianceCeiling(range * range / 4.0, "values within the lights' range: range^2 / 4");
       CAPTURE(v);
       CAPTURE(channel);
       INFO(std::string(x.onSurface ? "a diffuse floor (albedo 0.7) in a fog of sigmaT 0.6" : "a point in a fog of sigmaT 0.6")
@@ -595,7 +595,7 @@ TEST_CASE("T12.4 absorption: behind a slab that only absorbs, a light is dimmed 
     clear.emplace_back(Ray{origin, Vec3(0.0f, 0.0f, -1.0f)}, uint32_t(i), testSeed(82));
   }
   MeanEstimate seen;  // radiance / Le, in red
-  seen.setVarianceCeiling(0.1);
+  seen.setVarianceCeiling(0.1, "0.1: Russian roulette on the camera ray, at most");
   for (const Color& L : candidate::tracePathsInMedia(scene, {1, 8}, clear)) {
     seen.add(std::isfinite(L.x) ? double(L.x) / double(le.x) : 1e30);
   }

@@ -2,10 +2,14 @@
 never terminates, whose task 5 returns NaN and whose task 1 prints megabytes
 must get a results.json where every other test is scored normally. Task 3's
 tests that build a tree time out one by one (10 s each) until the task's
-budget (40 s here) is used up, and the rest are reported as not run.
+budget (40 s here) is used up, and the rest are reported as not run. Then a
+judge past its own memory limit (PATHLAB_JUDGE_MEMORY at 24 MB, which task
+1's image test needs more than, its other tests not) fails that test alone,
+and says so.
 
 usage: test_grader.py REPO_ROOT WORK_DIR GRADE_BUILD_DIR"""
 import json
+import os
 import re
 import shutil
 import subprocess
@@ -80,7 +84,18 @@ expect(3, ["T3.2", "T3.3", "T3.4"], "timed out", "time budget of 40 s was used u
 expect(5, ["T5.2"], "")                           # NaN radiance; the sampler still passes
 if out.stat().st_size > 1_000_000:
     failures.append(f"results.json is {out.stat().st_size} bytes: output was not clipped")
-checks = 10
+
+limited = build / "judge-memory-results.json"
+subprocess.run([sys.executable, str(root / "tools" / "grade"), str(root / "solutions"), "--tasks", "1", "--out",
+                str(limited), "--build-dir", str(grade_build)], capture_output=True, text=True, timeout=600,
+               env={**os.environ, "PATHLAB_JUDGE_MEMORY": str(24 << 20)})
+tests = json.loads(limited.read_text())["tests"]
+stopped = [t for t in tests if "the judge needed more than its 24 MB" in t["output"]]
+if not stopped or any(t["score"] != 0 or "image" not in t["name"] for t in stopped) or \
+        any(t["score"] != t["max_score"] for t in tests if "image" not in t["name"]):
+    failures.append("with PATHLAB_JUDGE_MEMORY at 24 MB, task 1's image test should fail, saying the judge was "
+                    f"stopped, and its other tests keep their points: {[(t['name'], t['score']) for t in tests]}")
+checks = 11
 for f in failures:
     print("FAIL:", f)
 print(f"{checks - len(failures)} passed, {len(failures)} failed")

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "../remote/image_calls.h"
+#include "statistics.h"
 #include "check.h"
 #include "failure_pictures.h"
 #include "util/error.h"
@@ -282,6 +283,7 @@ PixelMoments checkImage(ImageCase c) {
   REQUIRE_MESSAGE((yours.usedBvh || c.scene.primitives.empty()),
                   "task 3's BVH failed the framework's validation, so nothing was rendered (the candidate's "
                   "output above says why)");
+  noteNoiseCeiling("image: the median pixel's variance at most 16 x the reference's (image_test.cpp)");
   const Verdict v = compare(yours, reference);
   INFO("image '" << c.name << "' (" << c.scene.render.width << "x" << c.scene.render.height << ", "
                  << c.scene.render.samplesPerPixel << " samples per pixel, |z| limit " << v.limit << ")");

@@ -45,6 +45,15 @@ void save(const std::string& path, const Variances& table) {
 
 }  // namespace
 
+void noteNoiseCeiling(const char* why) {
+  const char* path = std::getenv("PATHLAB_NOISE_CATALOG");
+  if (!path || !*path) return;
+  if (std::FILE* f = std::fopen(path, "a")) {
+    std::fprintf(f, "%s\t%s\n", currentTestCaseName(), why);
+    std::fclose(f);
+  }
+}
+
 void limitNoise(MeanEstimate& m, const std::string& suite) {
   const std::string key = std::string(currentTestCaseName()) + " #" + std::to_string(nextCheckIndex());
   const std::string path = variancesPath(suite);
@@ -62,11 +71,12 @@ void limitNoise(MeanEstimate& m, const std::string& suite) {
   if (found == loaded->second.end()) {
     FAIL_CHECK("no reference variance for '" << key << "' in " << path
                                              << " (tools/make-reference-images writes it)");
-    m.setVarianceCeiling(0.0);
+    m.setVarianceCeiling(0.0, "none stored: the test fails");
     return;
   }
   // A deterministic reference (variance 0) allows a correct estimator's rounding noise only.
-  m.setVarianceCeiling(kNoiseFactor * found->second + 1e-12);
+  m.setVarianceCeiling(kNoiseFactor * found->second + 1e-12,
+                       "8 x the largest of the reference's and the alternates' (reference-variances.txt)");
   if (const char* stats = std::getenv("PATHLAB_NOISE_STATS"); stats && *stats) {
     // The variance ratio per estimate, to measure kNoiseFactor's margin.
     if (std::FILE* f = std::fopen(stats, "a")) {

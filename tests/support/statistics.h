@@ -18,6 +18,11 @@
 
 namespace pathlab::test {
 
+// With PATHLAB_NOISE_CATALOG=FILE, appends "<test case>\t<why>" to FILE:
+// which ceiling each judged statistic of each test has (tools/grader-validity
+// writes the catalogue from it). reference_noise.cpp.
+void noteNoiseCeiling(const char* why);
+
 // Running mean and variance (Welford), per colour channel collapsed to one
 // number by the caller.
 class MeanEstimate {
@@ -45,15 +50,17 @@ class MeanEstimate {
   // estimator's sample variance can jump with one rare, large sample.)
   // Every mean that is judged has one (by construction: judgedStandardError
   // and agrees refuse to judge without it, so a new test that forgets it
-  // fails on the reference at once).
-  void setVarianceCeiling(double ceiling) {
+  // fails on the reference at once). `why` says where it comes from, for
+  // docs/grader-validity.md's catalogue (noteNoiseCeiling).
+  void setVarianceCeiling(double ceiling, const char* why) {
     ceiling_ = ceiling;
     capped_ = true;
+    noteNoiseCeiling(why);
   }
   // Only where what is measured is the framework's own code, never a
   // candidate's answer (tests/framework): its noise is judged as it is. The
   // suites may not call this (suites-call-the-candidate checks).
-  void judgeByOwnNoise() { setVarianceCeiling(kInfinity); }
+  void judgeByOwnNoise() { setVarianceCeiling(kInfinity, "none: the framework's own code"); }
   bool tooNoisy() const { return !(variance() <= ceiling_); }
   double judgedStandardError() const {
     if (!capped_) {
