@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "../remote/call.h"
+#include "core/leaf_geometry.h"
 #include "core/scene.h"
+#include "render/task_wiring.h"
 #include "tasks/bvh.h"
 
 namespace pathlab::calls {
@@ -36,23 +38,20 @@ struct BvhShape {
     wire::readElements(r, bvh.primitives, std::get<0>(args).size());
   }
 };
-// The slots of the tree a ray's traversal tested: each below the tree's
-// slot count, each at most twice per ray.
-using TraversalArgs = std::tuple<Bvh, Scene, std::vector<RayInRange>, bool>;
-struct Slots {
-  static size_t of(const TraversalArgs& args) { return std::get<0>(args).primitives.size(); }
-};
-struct SlotTests {
-  static size_t of(const TraversalArgs& args) { return 2 * Slots::of(args); }
-};
+// A traversal whose primitive tests the judge serves: the candidate's leaf
+// geometry asks the judge for each one (the ray's index, the slot and the
+// range: three uint32_t and an Interval; the reply an optional PrimitiveHit,
+// the judge's own test), so the judge knows every slot each traversal
+// tested. Per ray: whether it found a hit (intersectAny: was blocked), and
+// the traversal's own statistics.
+using ServedResult = std::tuple<bool, TraversalStats>;
 PATHLAB_REMOTE_CALL(IntersectBox, 1, shape::Fixed, std::optional<float>(Aabb, Ray, Vec3, Interval));
 PATHLAB_REMOTE_CALL(BuildBvh, 2, BvhShape, Bvh(std::vector<Aabb>));
 PATHLAB_REMOTE_CALL(IntersectClosest, 3, shape::OnePer<2>, std::vector<ClosestResult>(Bvh, Scene, std::vector<RayInRange>));
 PATHLAB_REMOTE_CALL(IntersectAny, 4, shape::OnePer<2>, std::vector<AnyResult>(Bvh, Scene, std::vector<RayInRange>));
 // The slots each ray's traversal tested, as the leaf geometry records them
 // (the framework's log, not the candidate's own count): closest hit, or any hit.
-using SlotsPerRay = shape::OnePer<2, shape::AtMost<SlotTests, shape::IndexBelow<Slots>>>;
-PATHLAB_REMOTE_CALL(TestedSlots, 5, SlotsPerRay, std::vector<std::vector<uint32_t>>(Bvh, Scene, std::vector<RayInRange>, bool));
+PATHLAB_REMOTE_CALL(TraverseServed, 5, shape::OnePer<2>, std::vector<ServedResult>(Bvh, Scene, std::vector<RayInRange>, bool));
 }  // namespace pathlab::calls
 
 namespace pathlab::candidate {
@@ -82,9 +81,51 @@ inline bool intersectAny(const Bvh& bvh, const Scene& scene, const Ray& ray, Int
   return blocked;
 }
 
-inline std::vector<std::vector<uint32_t>> testedSlots(const Bvh& bvh, const Scene& scene,
-                                                     const std::vector<calls::RayInRange>& rays, bool anyHit) {
-  return remote::call<calls::TestedSlots>(bvh, scene, rays, anyHit);
+// A traversal of each ray (intersectAny with anyHit, else intersectClosest)
+// whose primitive tests the judge served, and what the judge saw of it.
+struct ServedTraversal {
+  bool found = false;             // what the traversal returned: a hit, or blocked
+  TraversalStats stats;           // what it counted
+  std::vector<uint32_t> tested;   // the slots it tested, in order: the judge's own count
+};
+inline std::vector<ServedTraversal> traverseServed(const Bvh& bvh, const Scene& scene,
+                                                   const std::vector<calls::RayInRange>& rays, bool anyHit) {
+  for (uint32_t primitive : bvh.primitives) {  // the judge indexes the scene with them (validateBvh checks more)
+    if (primitive >= scene.primitives.size()) throw remote::CandidateError("the tree names primitive " + std::to_string(primitive) + " of " + std::to_string(scene.primitives.size()));
+  }
+  const LeafGeometry geometry(scene, bvh.primitives, kLinkedTasks.primitives);  // the judge's (reference) tests
+  std::vector<ServedTraversal> traversals(rays.size());
+  const remote::AskHandler serve = [&](const std::string& question) {
+    uint32_t ray = 0, slot = 0;
+    Interval range;
+    try {
+      wire::Reader reader(question);
+      ray = reader.get<uint32_t>();
+      slot = reader.get<uint32_t>();
+      range = reader.get<Interval>();
+      reader.expectEnd();
+    } catch (const wire::WireError& e) {
+      throw remote::CandidateError(std::string("the candidate asked for a primitive test in a malformed way: ") + e.what());
+    }
+    if (ray >= rays.size() || slot >= geometry.size()) {
+      throw remote::CandidateError("the candidate asked to test slot " + std::to_string(slot) + " for ray " +
+                                   std::to_string(ray) + " (the tree has " + std::to_string(geometry.size()) +
+                                   " slots, the request " + std::to_string(rays.size()) + " rays)");
+    }
+    std::vector<uint32_t>& tested = traversals[ray].tested;
+    if (tested.size() >= 4 * size_t(geometry.size()) + 16) {  // the judge's own log stays bounded
+      throw remote::CandidateError("ray " + std::to_string(ray) + "'s traversal tested over " +
+                                   std::to_string(tested.size()) + " primitives, four times the tree's");
+    }
+    tested.push_back(slot);
+    wire::Writer reply;
+    reply.put(geometry.intersect(slot, std::get<0>(rays[ray]), range));
+    return reply.bytes();
+  };
+  const std::vector<calls::ServedResult> answers =
+      remote::callMany<calls::TraverseServed>({{bvh, scene, rays, anyHit}}, &serve).front();
+  for (size_t i = 0; i < rays.size(); ++i) std::tie(traversals[i].found, traversals[i].stats) = answers[i];
+  return traversals;
 }
 
 }  // namespace pathlab::candidate

@@ -5,6 +5,33 @@
 #include "render/task_wiring.h"
 
 namespace pathlab::remote {
+namespace {
+
+// TraverseServed's primitive tests: each asks the judge, which tests the
+// slot the geometry is about to test (the last it logged) for the current
+// ray, and counts it.
+struct Served {
+  uint32_t ray = 0;
+  const std::vector<uint32_t>* slots = nullptr;
+} served;
+
+std::optional<PrimitiveHit> askJudge(Interval range) {
+  wire::Writer question;
+  question.put(served.ray);
+  question.put(served.slots->back());
+  question.put(range);
+  return wire::Reader(ask(question.bytes())).get<std::optional<PrimitiveHit>>();
+}
+std::optional<TriangleHit> askTriangle(const Ray&, Interval range, const Point3&, const Point3&, const Point3&) {
+  const std::optional<PrimitiveHit> hit = askJudge(range);
+  return hit ? std::optional<TriangleHit>(TriangleHit{hit->t, hit->b1, hit->b2}) : std::nullopt;
+}
+std::optional<float> askSphere(const Ray&, Interval range, const Point3&, float) {
+  const std::optional<PrimitiveHit> hit = askJudge(range);
+  return hit ? std::optional<float>(hit->t) : std::nullopt;
+}
+
+}  // namespace
 
 void registerCalls(Server& server) {
   serveImageCalls(server);
@@ -31,21 +58,21 @@ void registerCalls(Server& server) {
     }
     return results;
   });
-  server.serve<calls::TestedSlots>(
+  server.serve<calls::TraverseServed>(
       [](const Bvh& bvh, const Scene& scene, const std::vector<calls::RayInRange>& rays, bool anyHit) {
-        LeafGeometry geometry(scene, bvh.primitives, kLinkedTasks.primitives);
-        std::vector<std::vector<uint32_t>> tested(rays.size());
+        LeafGeometry geometry(scene, bvh.primitives, PrimitiveTests{&askTriangle, &askSphere});
+        std::vector<uint32_t> slots;  // the geometry logs each slot just before it tests it
+        geometry.recordTests(&slots);
+        std::vector<calls::ServedResult> results;
         for (size_t i = 0; i < rays.size(); ++i) {
+          served = {uint32_t(i), &slots};
           const auto& [ray, range] = rays[i];
-          geometry.recordTests(&tested[i]);
-          if (anyHit) {
-            intersectAny(bvh, geometry, ray, range, nullptr);
-          } else {
-            intersectClosest(bvh, geometry, ray, range, nullptr);
-          }
+          TraversalStats stats;
+          const bool found = anyHit ? intersectAny(bvh, geometry, ray, range, &stats)
+                                    : intersectClosest(bvh, geometry, ray, range, &stats).has_value();
+          results.emplace_back(found, stats);
         }
-        geometry.recordTests(nullptr);
-        return tested;
+        return results;
       });
 }
 

@@ -82,7 +82,7 @@ std::vector<Case> makeCases() {
   for (uint32_t i = 0; i < 10; ++i) bvh.primitives.push_back(i);
   cases.push_back(caseOf<calls::BuildBvh>({{boxes}}, {bvh}));
   const std::vector<calls::RayInRange> rays(3, {Ray{Point3(0.0f), Vec3(0, 0, -1)}, Interval{0.0f, 10.0f}});
-  cases.push_back(caseOf<calls::TestedSlots>({{bvh, scene, rays, false}}, {{{0, 1, 2}, {}, {9}}}));
+  cases.push_back(caseOf<calls::TraverseServed>({{bvh, scene, rays, false}}, {{{true, {}}, {false, {}}, {true, {}}}}));
 
   Image map(8, 4, Color(1.0f));
   EnvironmentDistribution d;
