@@ -145,6 +145,12 @@ MUTANTS = [
     (5, "pdf-mismatch", "a uniform pdf for a cosine-weighted sampler",
      [("float diffuseDirectionPdf(const Vec3& wi) { return wi.z > 0.0f ? wi.z * kInvPi : 0.0f; }",
        "float diffuseDirectionPdf(const Vec3& wi) { return wi.z > 0.0f ? 0.5f * kInvPi : 0.0f; }")]),
+    (5, "horizon-never-sampled", "cosine sampling that never goes below 18 degrees over the horizon, with the pdf "
+     "that matches it (0 there): consistent with itself, and a tenth of the light lost",
+     [("  const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};",
+       "  const float r = std::sqrt(0.9f * u.x), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - 0.9f * u.x))};"),
+      ("float diffuseDirectionPdf(const Vec3& wi) { return wi.z > 0.0f ? wi.z * kInvPi : 0.0f; }",
+       "float diffuseDirectionPdf(const Vec3& wi) { return wi.z > 0.31622777f ? wi.z * kInvPi / 0.9f : 0.0f; }")]),
     (5, "depth-off-by-one", "one bounce more than -m allows",
      [("    if (bounce >= context.settings.maxDepth) break;", "    if (bounce > context.settings.maxDepth) break;")]),
     (5, "direct-light-only-at-first-hit", "next-event estimation only at the camera hit",
