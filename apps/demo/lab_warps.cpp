@@ -465,9 +465,18 @@ Vec3 incident(const Values& p) {
   return {std::sin(theta), 0.0f, std::cos(theta)};
 }
 
+// The lab's histogram is over directions themselves (50 x 101 cells), not
+// over stretched half vectors as task 8's suite uses: a lobe much narrower
+// than a cell, or squeezed against the horizon, is beyond its quadrature,
+// and it rejected the reference there (at roughness 0.05 to 0.2236, and for
+// the BSDF at 85 degrees and more below roughness 0.5). The ranges stop
+// where the reference was accepted in every run of a grid of settings and
+// seeds (docs/debugger.md); the suite tests the sharper lobes.
+constexpr double kLabRoughnessMin = 0.3, kLabBsdfAngleMax = 80.0;
+
 Warp ggxNormalsWarp() {
   return {"ggx-normals", "T8.5", "sampleGgxNormal against D(m) cos theta_m (local frame, normal +z)",
-          {{"roughness", 0.5, 0.05, 1.0, false, false, "perceptual roughness (alpha = roughness^2)"}},
+          {{"roughness", 0.5, kLabRoughnessMin, 1.0, false, false, "perceptual roughness (alpha = roughness^2)"}},
           [](const Values& p, const WarpFiles&) {
             const float alpha = alphaFromRoughness(float(p.at("roughness")));
             WarpSetup s;
@@ -483,7 +492,7 @@ Warp ggxNormalsWarp() {
 Warp visibleNormalsWarp() {
   return {"visible-normals", "T8.5", "sampleVisibleNormal against visibleNormalPdf for wo at a chosen angle",
           {{"angle", 70.0, 0.0, 89.0, false, false, "wo's angle from the normal, degrees"},
-           {"roughness", 0.5, 0.05, 1.0, false, false, "perceptual roughness (alpha = roughness^2)"}},
+           {"roughness", 0.5, kLabRoughnessMin, 1.0, false, false, "perceptual roughness (alpha = roughness^2)"}},
           [](const Values& p, const WarpFiles&) {
             const float alpha = alphaFromRoughness(float(p.at("roughness")));
             const Vec3 wo = incident(p);
@@ -499,8 +508,8 @@ Warp visibleNormalsWarp() {
 
 Warp microfacetBsdfWarp() {
   return {"microfacet-bsdf", "T8.6", "sampleConductor (or samplePlastic) against its pdf for wo at a chosen angle",
-          {{"angle", 45.0, 0.0, 89.0, false, false, "wo's angle from the normal, degrees"},
-           {"roughness", 0.5, 0.05, 1.0, false, false, "perceptual roughness (alpha = roughness^2)"},
+          {{"angle", 45.0, 0.0, kLabBsdfAngleMax, false, false, "wo's angle from the normal, degrees"},
+           {"roughness", 0.5, kLabRoughnessMin, 1.0, false, false, "perceptual roughness (alpha = roughness^2)"},
            {"plastic", 0, 0, 1, true, false, "1: the rough plastic (T8.7) instead of the conductor"}},
           [](const Values& p, const WarpFiles&) {
             const Vec3 wo = incident(p);

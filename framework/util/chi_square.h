@@ -152,14 +152,15 @@ struct DirectionHistogram {
   // The midpoint rule over the given cells (index j * kPhi + i), sub per side:
   // samples times the pdf's integral over each; `varies` (if given) collects
   // the cells where the pdf varies by more than a factor 2 (or is 0 beside a
-  // value that is not).
+  // value that is not), `edges` those where it is 0 beside a value that is
+  // not (the edge of the pdf's support crosses them).
   // The pdf is asked for at most this many directions at once: 32 x 32
   // points in each of the 5,050 cells are 5.2 million, which held at once
   // (with their remote call's messages) took 800 MB.
   static constexpr size_t kDirectionsPerBatch = size_t(1) << 17;
 
   static std::vector<double> integrateCells(const PdfBatch& pdfs, double samples, const std::vector<int>& cells, int sub,
-                                            std::vector<int>* varies = nullptr) {
+                                            std::vector<int>* varies = nullptr, std::vector<int>* edges = nullptr) {
     const double dPhi = 2.0 * std::numbers::pi / kPhi;
     const size_t perCell = size_t(sub) * size_t(sub);
     const size_t cellsPerBatch = std::max<size_t>(1, kDirectionsPerBatch / perCell);
@@ -185,6 +186,7 @@ struct DirectionHistogram {
         }
         result[c] = samples * integral * (dPhi / sub) * dThetas[c - first];
         if (varies && hi > 0.0 && hi > 2.0 * lo) varies->push_back(cells[c]);
+        if (edges && hi > 0.0 && lo == 0.0) edges->push_back(cells[c]);
       }
     }
     return result;
@@ -197,16 +199,54 @@ struct DirectionHistogram {
     return integrateCells(pdfs, samples, all, kSub);
   }
 
+  // What expectedRefined found (when asked): how much refining moved the
+  // cells it refined (the sum of |fine - coarse|, in samples: the coarse
+  // rule's error there, and more than the fine rule's, whose error across a
+  // jump is kSub / kFine of it), and the cells on the edge of the pdf's
+  // support: 0 at some midpoints and not at others, or beside a cell on the
+  // other side of the edge. It refines those too, but no midpoint rule is
+  // accurate there (a pdf that jumps at the edge, such as a uniform lobe's
+  // at the horizon, can put many samples in a sliver between midpoints): a
+  // chi-square can pool them, whose total it knows without them.
+  struct Refinement {
+    double change = 0.0;
+    std::vector<int> edges;
+  };
+
   // As expected(), then again with kFine midpoints per side in the cells
-  // where the pdf varies by more than a factor 2: a lobe a few thousandths
-  // of a radian wide (GGX at roughness 0.08) is integrated finely, and the
-  // flat cells cost no more.
-  static std::vector<double> expectedRefined(const PdfBatch& pdfs, double samples, int kSub, int kFine) {
-    std::vector<int> all(kPhi * kCos), varying;
+  // where the pdf varies by more than a factor 2 and on its support's edge:
+  // a lobe a few thousandths of a radian wide (GGX at roughness 0.08) is
+  // integrated finely, and the flat cells cost no more.
+  static std::vector<double> expectedRefined(const PdfBatch& pdfs, double samples, int kSub, int kFine,
+                                             Refinement* refinement = nullptr) {
+    std::vector<int> all(kPhi * kCos), varying, split;
     std::iota(all.begin(), all.end(), 0);
-    std::vector<double> result = integrateCells(pdfs, samples, all, kSub, &varying);
-    const std::vector<double> fine = integrateCells(pdfs, samples, varying, kFine);
-    for (size_t c = 0; c < varying.size(); ++c) result[size_t(varying[c])] = fine[c];
+    std::vector<double> result = integrateCells(pdfs, samples, all, kSub, &varying, &split);
+    std::vector<int> edges = split;
+    for (int j = 0; j < kCos; ++j)
+      for (int i = 0; i < kPhi; ++i) {
+        const bool inside = result[size_t(j * kPhi + i)] > 0.0;
+        bool across = false;
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di) {
+            const int jj = j + dj, ii = (i + di + kPhi) % kPhi;
+            across |= jj >= 0 && jj < kCos && (result[size_t(jj * kPhi + ii)] > 0.0) != inside;
+          }
+        if (across) edges.push_back(j * kPhi + i);
+      }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    std::vector<int> refine = varying;
+    refine.insert(refine.end(), edges.begin(), edges.end());
+    std::sort(refine.begin(), refine.end());
+    refine.erase(std::unique(refine.begin(), refine.end()), refine.end());
+    const std::vector<double> fine = integrateCells(pdfs, samples, refine, kFine);
+    double change = 0.0;
+    for (size_t c = 0; c < refine.size(); ++c) {
+      change += std::abs(fine[c] - result[size_t(refine[c])]);
+      result[size_t(refine[c])] = fine[c];
+    }
+    if (refinement) *refinement = Refinement{change, std::move(edges)};
     return result;
   }
 };

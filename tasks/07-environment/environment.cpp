@@ -31,7 +31,8 @@ namespace pathlab {
 // and back: w = (sin(theta) cos(phi), cos(theta), sin(theta) sin(phi)).
 // PITFALL: clamp w.y into [-1, 1] before acos (rounding can leave it just outside).
 // PITFALL: phi + 2 pi rounds to exactly 2 pi for a phi just below 0 (u = 1):
-// keep u below 1, e.g. min(u, the largest float below 1).
+// keep u below 1: min(u, the largest float below 1), or wrap a u of 1 to 0
+// (u is periodic: both name the seam's meridian).
 Point2 directionToEquirect(const Vec3& direction) {
   // TODO(T7.1): direction -> (u, v).
   PATHLAB_TODO("T7.1");

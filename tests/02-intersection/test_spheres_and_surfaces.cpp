@@ -4,7 +4,7 @@
 // Expected values come from double-precision computations on the same float
 // inputs. Tests run from basic to advanced. candidate::f(...) is the
 // student's f, computed in the candidate process (calls.h).
-#include <doctest/doctest.h>
+#include "doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 // reference's SAH cost. All inputs are seeded: no false failures.
 // candidate::f(...) is the student's f, computed in the candidate process
 // (calls.h); brute force and the tree checks run here, in the judge.
-#include <doctest/doctest.h>
+#include "doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>

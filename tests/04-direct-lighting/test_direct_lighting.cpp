@@ -4,7 +4,7 @@
 // estimator fails a check with probability 5.7e-7. Seeds are fixed.
 // candidate::f(...) is the student's f, computed in the candidate process
 // (calls.h); scenes, hits and exact answers are made here, in the judge.
-#include <doctest/doctest.h>
+#include "doctest_strings.h"
 
 #include <cmath>
 #include <numbers>

@@ -5,7 +5,7 @@
 // measured standard errors (false failure 5.7e-7 per check); the sampler's
 // chi-square test uses alpha = 1e-4. Seeds are fixed. candidate::f(...) is
 // the student's f, computed in the candidate process (calls.h).
-#include <doctest/doctest.h>
+#include "doctest_strings.h"
 
 #include <cmath>
 

@@ -4,7 +4,7 @@
 // standard errors (5.7e-7). Seeds are fixed (PATHLAB_TEST_SEED varies them).
 // candidate::f(...) is the student's f, computed in the candidate process
 // (calls.h); expected values are computed here, in the judge.
-#include <doctest/doctest.h>
+#include "doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 // No test pins a convention: any uniform disk map (polar or concentric, any
 // orientation, either random number as the radius) and any way of mapping
 // the disk onto the lens's plane (right/up or up/right, either sign) pass.
-#include <doctest/doctest.h>
+#include "doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>

@@ -11,7 +11,7 @@
 // alpha = 1e-5 each, means within 5 judged standard errors (5.7e-7 each);
 // the samplers' inputs are stratified, so a correct sampler's counts are
 // all but exact and those tests cannot fail it at all.
-#include <doctest/doctest.h>
+#include "doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -514,7 +514,8 @@ TEST_CASE("T12.3 direct lighting in media: through the phase function in a fog, 
 // ---- T12.4 ------------------------------------------------------------------
 
 TEST_CASE("T12.4 furnace: a medium that absorbs nothing, in an index-matched sphere under a grey sky, returns the sky" *
-          grading(4, "with albedo 1 no light is lost: every path must return the sky's 0.8 on average, whatever sigmaS and g. "
+          grading(4, "with albedo 1 no light is lost: every path must return the sky's radiance on average (0.8, "
+                     "shown above in units of the sky: 1), whatever sigmaS and g. "
                      "Less: the surface's weight lacks 1 / P(pass), or a scattering event was counted as absorption; "
                      "more: light counted twice (emission after direct lighting)")) {
   struct Case {
@@ -674,7 +675,10 @@ TEST_CASE("T12.4 image: the fog box with light shafts agrees with the converged 
 }
 
 TEST_CASE("T12.4 image: a ball of medium inside glass, in a haze under a light, agrees with the converged picture" *
-          grading(3, "the ball's medium is entered through glass: after a BSDF sample that crosses the surface the "
-                     "medium is scene.mediumAcross(hit, wi, medium); the haze is the camera's medium (scene.medium)")) {
+          grading(3, "compare your picture with the reference (files named above). Where the ball differs: its "
+                     "medium is entered through glass, so after a BSDF sample that crosses the surface the medium "
+                     "is scene.mediumAcross(hit, wi, medium). Where the floor, the light or the air differ: the "
+                     "haze is the camera's medium (scene.medium), and every ray through it, shadow rays too, is "
+                     "dimmed by its transmittance or scatters in it")) {
   checkImage({"12-media", "jade-ball", jadeBall(), {}});
 }

@@ -1,6 +1,6 @@
 // The lecture demos' numerics (apps/demo): the inversions they teach must be
 // right to the last digit, and every demo must run and say what it shows.
-#include <doctest/doctest.h>
+#include "doctest_strings.h"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 // Framework tests: JSON and OBJ scene loading and its error messages (the
 // course's COLLADA files: test_collada.cpp; rendering, images, random
 // numbers and strategies: test_render.cpp). Linked with the reference tasks.
-#include <doctest/doctest.h>
+#include "doctest_strings.h"
 
 
 #include <cstdio>

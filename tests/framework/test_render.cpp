@@ -1,7 +1,7 @@
 // Framework tests: reproducible rendering, the two traversals, NaN
 // accounting, image I/O, random numbers and the sampling strategies. Linked
 // with the reference tasks.
-#include <doctest/doctest.h>
+#include "doctest_strings.h"
 
 
 #include <cstdio>

@@ -3,9 +3,12 @@
 candidate: the judge links the reference, so a plain intersectTriangle(...)
 in tests/02-intersection would test the reference, not the student. This
 check fails on any call of a task function in a suite's test files that is
-not written candidate::name(...) (comments and strings are ignored), and on
+not written candidate::name(...) (comments and strings are ignored), on
 a suite that judges a mean by the candidate's own noise without a ceiling
-(MeanEstimate::judgeByOwnNoise, which is for the framework's own tests).
+(MeanEstimate::judgeByOwnNoise, which is for the framework's own tests),
+and on any test file that includes doctest other than through
+support/doctest_strings.h (without it a C string in a message prints as
+an address).
 
 usage: check_direct_calls.py TESTS_DIR FRAMEWORK_DIR"""
 import re
@@ -47,9 +50,17 @@ def main() -> int:
                     for m in re.finditer(rf"(?<![\w.>:])({name})\s*\(", line):
                         problems.append(f"{source.relative_to(tests)}:{number}: {name}(...) runs the judge's "
                                         f"reference; write candidate::{name}(...)")
+    for source in sorted(tests.rglob("*.[ch]*")):
+        if source.name == "doctest_strings.h" or source.suffix not in (".cpp", ".h"):
+            continue
+        for number, line in enumerate(source.read_text(errors="replace").splitlines(), 1):
+            if re.match(r'\s*#\s*include\s*[<"]doctest/doctest\.h[>"]', line):
+                problems.append(f"{source.relative_to(tests)}:{number}: include \"doctest_strings.h\", not doctest "
+                                "itself (a C string in a message would print as an address)")
     for p in problems:
         print(p)
-    print(f"{len(SUITES)} suites checked: {len(problems)} problems (direct calls of task functions, uncapped means)")
+    print(f"{len(SUITES)} suites checked: {len(problems)} problems (direct calls of task functions, uncapped means, "
+          "doctest included directly)")
     return 1 if problems else 0
 
 

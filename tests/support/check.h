@@ -2,7 +2,7 @@
 // vector closeness with the values printed on failure, seeded randomness.
 #pragma once
 
-#include <doctest/doctest.h>
+#include "doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>

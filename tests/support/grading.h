@@ -10,7 +10,7 @@
 // score line at the end ("SCORE 17/20 points").
 #pragma once
 
-#include <doctest/doctest.h>
+#include "doctest_strings.h"
 
 #include <string>
 
@@ -33,6 +33,12 @@ inline doctest::description grading(int points, const char* hint, Visibility vis
 void recordLeaderboard(const std::string& name, double value, bool lowerIsBetter);
 // One line into PATHLAB_VERDICT_FILE (nothing when it is not set).
 void appendVerdictLine(const std::string& line);
+
+// What a failed check points to, when a test has several checks and its
+// own hint fits only some of them: called where the check fails, it is
+// printed under the test instead of the test's hint (each such hint once,
+// in order). A test whose checks all point to one mistake needs none.
+void hintForFailure(const std::string& hint);
 
 // The test case running now, and 0, 1, 2, ... on successive calls within it:
 // the key of data a suite stores per check (reference_noise.h).

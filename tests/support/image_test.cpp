@@ -1,6 +1,6 @@
 #include "image_test.h"
 
-#include <doctest/doctest.h>
+#include "doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>

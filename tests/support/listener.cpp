@@ -8,11 +8,13 @@
 // "END" when the run finished; and any leaderboard entry a test records,
 // "LEADERBOARD asc|desc <value> <name>". The grader reads only this file, which the
 // candidate cannot reach, never the judge's stdout.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "grading.h"
 #include "../remote/call.h"
@@ -47,7 +49,13 @@ void recordLeaderboard(const std::string& name, double value, bool lowerIsBetter
 namespace {
 const doctest::TestCaseData* g_currentTestCase = nullptr;
 int g_checkIndex = 0;
+std::vector<std::string> g_failureHints;  // this test case's, from hintForFailure
 }  // namespace
+
+void hintForFailure(const std::string& hint) {
+  if (std::find(g_failureHints.begin(), g_failureHints.end(), hint) == g_failureHints.end())
+    g_failureHints.push_back(hint);
+}
 
 const char* currentTestCaseName() { return g_currentTestCase ? g_currentTestCase->m_name : "(no test case)"; }
 int nextCheckIndex() { return g_checkIndex++; }
@@ -88,6 +96,7 @@ struct GradingListener : doctest::IReporter {
     current_ = &data;
     g_currentTestCase = &data;
     g_checkIndex = 0;
+    g_failureHints.clear();
     remote::takeCandidateOutput();  // output of earlier tests is not this test's
   }
   void test_case_reenter(const doctest::TestCaseData&) override {}
@@ -99,7 +108,12 @@ struct GradingListener : doctest::IReporter {
       earned_ += points;
       ++passed_;
     } else {
-      std::printf("HINT (%s, %d pts): %s\n", current_->m_name, points, hintOf(current_->m_description).c_str());
+      std::string hint = hintOf(current_->m_description);
+      if (!g_failureHints.empty()) {  // the failed checks' own hints, not the test's
+        hint.clear();
+        for (const std::string& h : g_failureHints) hint += (hint.empty() ? "" : " ALSO: ") + h;
+      }
+      std::printf("HINT (%s, %d pts): %s\n", current_->m_name, points, hint.c_str());
       printCandidateOutput();
     }
     verdict(std::string(stats.testCaseSuccess ? "PASS " : "FAIL ") + std::to_string(points) + " " + current_->m_name);
