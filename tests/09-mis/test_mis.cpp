@@ -488,6 +488,64 @@ TEST_CASE("T9.3 path tracer: light alone, BSDF alone and MIS each give Lambert's
   }
 }
 
+// Every kind of light at once (two area lights, a sky, a point light) over a
+// floor lit on either side of its winding: what the suite tests apart, put
+// together. The sky is seen wherever the lights (opaque, emitting downwards)
+// do not hide it: E = Ls (pi - P_big - P_small) + 2 P_big + 30 P_small +
+// I cos / d^2, with P a square's projected solid angle (Lambert's formula);
+// BSDF sampling alone has no point light (it takes no light sample).
+TEST_CASE("T9.3 path tracer: area lights, a sky and a point light at once, on a floor of either winding, by every "
+          "estimator" *
+          grading(2, "every light shares the choice: with area lights and a sky, each has probability 1 / (areas + "
+                     "1) in sampleOneLight and in oneLightPdf, also for a BSDF ray that escapes to the sky; a "
+                     "surface is lit on whichever side of its winding the ray arrived (orient its normal towards wo)")) {
+  constexpr float kSky = 0.25f, kIntensity = 1.5f;
+  const Point3 lamp(-1.0f, 1.0f, 1.2f);
+  std::vector<std::pair<MisEstimator, bool>> agreed;
+  std::vector<MeanEstimate> upright;  // each check's estimate on the floor facing up
+  size_t check = 0;
+  for (bool flipped : {false, true}) {
+    Scene scene = threeLights(false);
+    scene.environment = Environment{};
+    scene.environment->color = Color(kSky);
+    scene.pointLights.push_back(PointLight{lamp, Color(kIntensity)});
+    const uint32_t floor = addMaterial(scene, Color(0.5f));
+    if (flipped) addQuad(scene, {-10, 0, 10}, {0, 0, -20}, {20, 0, 0}, floor);  // u x v = -y: its back faces up
+    else addQuad(scene, {-10, 0, 10}, {20, 0, 0}, {0, 0, -20}, floor);
+    const Rig rig(scene);
+    TraceContext context = rig.context(1, 1);  // direct light only
+    for (Point3 target : {Point3(0.0f), Point3(1.0f, 0.0f, 0.5f)}) {
+      const DVec3 x(target), up(0, 1, 0);
+      const double big = polygonIrradiance(x, up, kBigSquare), small = polygonIrradiance(x, up, kSmallSquare);
+      const DVec3 toLamp = DVec3(lamp) - x;
+      const double areasAndSky = kSky * (std::numbers::pi - big - small) + 2.0 * big + 30.0 * small;
+      const double point = kIntensity * glm::normalize(toLamp).y / glm::dot(toLamp, toLamp);
+      for (MisEstimator e : kAllEstimators) {
+        // BSDF sampling alone takes no light sample, so no point light (the handout: a null weights.light
+        // switches light sampling off, point lights with it; no BSDF sample can find a point).
+        const double expected = 0.5 / std::numbers::pi * (areasAndSky + (e == MisEstimator::BsdfSampling ? 0.0 : point));
+        const MeanEstimate m = misMean(context, e, raysTo(target, 40000, 99), 99);
+        CAPTURE(nameOf(e));
+        CAPTURE(target.x);
+        INFO((flipped ? "the floor's winding faces down (lit on its back)" : "the floor's winding faces up"));
+        INFO(m.describe(expected));
+        agreed.emplace_back(e, m.agrees(expected));
+        CHECK(agreed.back().second);
+        if (!flipped) {
+          upright.push_back(m);
+        } else if (const MeanEstimate& up = upright[check++ % upright.size()];
+                   !agreed.back().second && up.agrees(expected) &&
+                   std::abs(up.mean() - m.mean()) > 5.0 * std::hypot(up.standardError(), m.standardError())) {
+          // Only the back side is wrong, and not by chance.
+          hintForFailure("only the floor lit on its winding's back side is wrong: take the cosines with the "
+                         "normal that faces wo (bsdf.normal()), not the hit's own");
+        }
+      }
+    }
+  }
+  hintByEstimators(agreed);
+}
+
 TEST_CASE("T9.3 path tracer: inside a closed emitting enclosure every estimator gives Le / (1 - rho)" *
           grading(2, "the BSDF pdf in a weight is the pdf of the bounce that made this ray (kept from the previous "
                      "vertex), and the light pdf is oneLightPdf at that previous vertex")) {

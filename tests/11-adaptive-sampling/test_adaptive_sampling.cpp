@@ -218,6 +218,12 @@ TEST_CASE("T11.2 rule: stop once 1.96 sigma / sqrt(n) <= tolerance x mean, and n
         }
       }
     }
+    // No spread at all: the half-width is 0, within any tolerance of a positive mean.
+    RunningStatistics flat;
+    flat.n = 2 * a.minSpp, flat.mean = 0.4, flat.m2 = 0.0;
+    all.push_back(flat);
+    expected.push_back(1);
+    what.push_back("no spread at all (every sample the same), mean 0.4");
     // Below the minimum, however tight; a mean of 0 with spread; a negative mean.
     RunningStatistics early, dark, negative;
     early.n = a.minSpp - 1, early.mean = 1.0, early.m2 = 1e-12;
@@ -247,7 +253,11 @@ TEST_CASE("T11.3 pixel: stops after the first whole batch where the rule holds, 
   Random random(23);
   int judged = 0;
   for (const AdaptiveSettings& a : someSettings()) {
-    const std::vector<std::vector<Color>> sequences = someSequences(a, random, 60);
+    std::vector<std::vector<Color>> sequences = someSequences(a, random, 60);
+    // Pixels with no spread at all: a flat colour (the rule holds at the first batch past the minimum),
+    // and black (0 <= 0: the rule holds, and ambiguously, so any stop is right).
+    sequences.push_back(std::vector<Color>(a.maxSpp, Color(0.3f, 0.2f, 0.1f)));
+    sequences.push_back(std::vector<Color>(a.maxSpp, Color(0.0f)));
     const std::vector<candidate::ServedPixel> results = candidate::samplePixels(sequences, a);
     REQUIRE(results.size() == sequences.size());
     for (size_t k = 0; k < sequences.size(); ++k) {
@@ -255,7 +265,8 @@ TEST_CASE("T11.3 pixel: stops after the first whole batch where the rule holds, 
       const candidate::ServedPixel& r = results[k];
       CAPTURE(k);
       INFO("tolerance " << a.tolerance << ", batches of " << a.batch << ", " << a.minSpp << " to " << a.maxSpp
-                        << " spp; sequence " << k << " (kind " << k % 5 << "): the rule stops it at n = " << e.n
+                        << " spp; sequence " << k << (k < 60 ? " (kind " + std::to_string(k % 5) + ")" : " (no spread at all)")
+                        << ": the rule stops it at n = " << e.n
                         << (e.confident ? " (confident)" : " (the maximum)") << " with mean " << str(Color(e.mean))
                         << "; yours took " << r.served << " samples, said " << r.pixel.samples << ", returned "
                         << str(r.pixel.estimate) << (r.pixel.confident ? " (confident)" : " (not confident)")

@@ -605,6 +605,41 @@ TEST_CASE("T12.4 absorption: behind a slab that only absorbs, a light is dimmed 
   CHECK(seen.agrees(1.0));
 }
 
+TEST_CASE("T12.4 absorption: a ball of ink in a haze that fills the scene: out of the ball, the haze again" *
+          grading(2, "a ray that leaves an interface's interior enters the medium outside it, which is the "
+                     "scene's (scene.mediumAcross(hit, wi, medium), or scene.medium), not a vacuum; inside, the "
+                     "ball's own medium")) {
+  // Both media only absorb, so what reaches the camera is exact: Le exp(-sigma_haze (d - c) - sigma_ink c),
+  // c the chord through the ball, d the distance to the emitting wall. Leaving the ball into a vacuum
+  // skips the haze behind it (2 units of it: the picture 22 % too bright).
+  constexpr double kHaze = 0.1, kInk = 0.5;
+  Scene scene;
+  scene.medium = addMedium(scene, float(kHaze), Color(0.0f), 0.0f);
+  addMediumSphere(scene, Point3(0.0f), 1.0f, addMedium(scene, float(kInk), Color(0.0f), 0.3f), false);
+  const Color le(2.0f, 1.0f, 0.5f);
+  addQuad(scene, Point3(-10, -10, -3), Vec3(20, 0, 0), Vec3(0, 20, 0), addMaterial(scene, Color(0.0f), le));
+  Random random(83);
+  std::vector<calls::PathQuery> queries;
+  std::vector<double> expected;
+  for (int i = 0; i < 20000; ++i) {
+    const Point3 origin(float(random.uniform(-0.5, 0.5)), float(random.uniform(-0.5, 0.5)), 4.0f);
+    const Vec3 direction = glm::normalize(Vec3(float(random.uniform(-0.05, 0.05)), float(random.uniform(-0.05, 0.05)), -1.0f));
+    queries.emplace_back(Ray{origin, direction}, uint32_t(i), testSeed(83));
+    const double d = 7.0 / std::abs(double(direction.z));  // to the wall at z = -3
+    const double c = chordInside(DVec3(origin), DVec3(direction), d, DVec3(0.0), 1.0);
+    expected.push_back(double(le.x) * std::exp(-kHaze * (d - c) - kInk * c));
+  }
+  const std::vector<Color> radiance = candidate::tracePathsInMedia(scene, {1, 8}, queries);
+  REQUIRE(radiance.size() == queries.size());
+  MeanEstimate ratio;  // radiance / the exact transmitted light, in red
+  for (size_t i = 0; i < radiance.size(); ++i)
+    ratio.add(std::isfinite(radiance[i].x) ? double(radiance[i].x) / expected[i] : 1e30);
+  limitNoise(ratio, "12-media");
+  INFO("camera rays in a haze (sigmaT 0.1, albedo 0) through a ball of ink (sigmaT 0.5, albedo 0, behind an "
+       "interface) onto a light: your radiance over Le exp(-0.1 (d - c) - 0.5 c): " << ratio.describe(1.0));
+  CHECK(ratio.agrees(1.0));
+}
+
 namespace {
 
 // media/scenes/fog-shafts.json at image-test size: the Cornell box full of
