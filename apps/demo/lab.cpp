@@ -287,21 +287,7 @@ LabResult runWarp(const Warp& warp, const Values& values, const WarpFiles& files
     // afar, a lobe cut by the horizon): no midpoint rule is accurate there,
     // so they are pooled with the draws that returned nothing, whose
     // expected total is n minus every other cell's.
-    std::vector<double> inside, insideExpected;
-    double rest = double(result.noSample), restExpected = double(n);
-    std::sort(edges.begin(), edges.end());
-    for (size_t cell = 0; cell < observed.size(); ++cell) {
-      if (std::binary_search(edges.begin(), edges.end(), int(cell))) {
-        rest += observed[cell];
-        continue;
-      }
-      inside.push_back(observed[cell]);
-      insideExpected.push_back(tested[cell]);
-      restExpected -= tested[cell];
-    }
-    inside.push_back(rest);
-    insideExpected.push_back(std::max(0.0, restExpected));
-    result.test = chiSquareTest(inside, insideExpected);
+    result.test = chiSquarePoolingEdges(observed, tested, double(result.noSample), double(n), edges);
   } else {
     if (missingMass) {
       observed.push_back(double(result.noSample));

@@ -98,6 +98,30 @@ inline ChiSquareResult chiSquareTest(const std::vector<double>& observed, const 
   return r;
 }
 
+// Pearson's test of per-cell counts and of the draws that returned nothing
+// (`nothing` of `samples` in all), with the cells in `edges` (sorted, as
+// DirectionHistogram::Refinement gives them) pooled with those draws: their
+// expected total is `samples` minus every other cell's expected count,
+// exact however the quadrature resolved them (the cells on the edge of a
+// pdf's support).
+inline ChiSquareResult chiSquarePoolingEdges(const std::vector<double>& observed, const std::vector<double>& expected,
+                                             double nothing, double samples, const std::vector<int>& edges) {
+  std::vector<double> inside, insideExpected;
+  double rest = nothing, restExpected = samples;
+  for (size_t cell = 0; cell < observed.size(); ++cell) {
+    if (std::binary_search(edges.begin(), edges.end(), int(cell))) {
+      rest += observed[cell];
+      continue;
+    }
+    inside.push_back(observed[cell]);
+    insideExpected.push_back(expected[cell]);
+    restExpected -= expected[cell];
+  }
+  inside.push_back(rest);
+  insideExpected.push_back(std::max(0.0, restExpected));
+  return chiSquareTest(inside, insideExpected);
+}
+
 // Histogram of unit directions over the equal-area map (phi in [-pi, pi],
 // cos(theta) in [-1, 1]), and the counts a solid-angle pdf predicts for
 // `samples` draws: per cell, the midpoint rule on a sub-grid in

@@ -165,26 +165,13 @@ std::vector<double> stretchedExpected(const Densities& densities, double a, doub
 // that gave nothing: their expected count together is n minus every other
 // cell's, exact whatever the quadrature makes of a sliver inside them.
 ChiSquareResult stretchedChiSquare(const std::string& name, const std::vector<DVec3>& stretched, int nothing,
-                                   const std::vector<double>& expected, std::vector<int> edges = {}) {
+                                   const std::vector<double>& expected, const std::vector<int>& edges = {}) {
   DirectionHistogram histogram;
   for (const DVec3& w : stretched) histogram.add(Vec3(w));
-  std::sort(edges.begin(), edges.end());
-  std::vector<double> observed, pooledExpected;
-  double restObserved = double(nothing + histogram.outside), samples = expected.back();
-  for (size_t i = 0; i < histogram.counts.size(); ++i) {
-    samples += expected[i];
-    if (std::binary_search(edges.begin(), edges.end(), int(i))) {
-      restObserved += histogram.counts[i];
-      continue;
-    }
-    observed.push_back(histogram.counts[i]);
-    pooledExpected.push_back(expected[i]);
-  }
-  double rest = samples;
-  for (double e : pooledExpected) rest -= e;
-  observed.push_back(restObserved);
-  pooledExpected.push_back(std::max(0.0, rest));
-  ChiSquareResult r = chiSquareTest(observed, pooledExpected);
+  double samples = 0.0;  // every draw: the cells' expected counts, and the last one's (nothing drawn)
+  for (double e : expected) samples += e;
+  ChiSquareResult r = chiSquarePoolingEdges(histogram.counts, expected, double(nothing + histogram.outside), samples,
+                                            edges);
   if (!r.failure.empty() || !(r.pValue > 1e-5) || picturesAlways()) {
     r.pictures = writeHistogramPictures(name, histogram.counts, std::vector<double>(expected.begin(), expected.end() - 1),
                                         DirectionHistogram::kPhi, DirectionHistogram::kCos, "phi cell",

@@ -533,9 +533,9 @@ TEST_CASE("T9.3 path tracer: area lights, a sky and a point light at once, on a 
         CHECK(agreed.back().second);
         if (!flipped) {
           upright.push_back(m);
-        } else if (const MeanEstimate& up = upright[check++ % upright.size()];
-                   !agreed.back().second && up.agrees(expected) &&
-                   std::abs(up.mean() - m.mean()) > 5.0 * std::hypot(up.standardError(), m.standardError())) {
+        } else if (const MeanEstimate& facingUp = upright[check++ % upright.size()];
+                   !agreed.back().second && facingUp.agrees(expected) &&
+                   std::abs(facingUp.mean() - m.mean()) > 5.0 * std::hypot(facingUp.standardError(), m.standardError())) {
           // Only the back side is wrong, and not by chance.
           hintForFailure("only the floor lit on its winding's back side is wrong: take the cosines with the "
                          "normal that faces wo (bsdf.normal()), not the hit's own");
