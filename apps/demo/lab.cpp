@@ -301,7 +301,9 @@ LabResult runWarp(const Warp& warp, const Values& values, const WarpFiles& files
     result.test.failure = format("%d samples landed where the pdf is 0 (their own pdf is 0 too)", zeroPdf);
   } else if (result.test.degreesOfFreedom < 1) {
     // Every sample in one cell, where the pdf puts all of it (a mirror, total
-    // internal reflection, one lit pixel): nothing more to test.
+    // internal reflection, one lit pixel), or every one in the cells of the
+    // support's edge, pooled (a light so far that it covers a few cells):
+    // nothing more to test.
     result.test.failure.clear();
     result.test.pValue = 1.0;
   }
@@ -425,7 +427,11 @@ LabResult runWarp(const Warp& warp, const Values& values, const WarpFiles& files
     numbers << "chi-square: " << result.test.failure << "\n";
   } else {
     numbers << (result.test.degreesOfFreedom < 1
-                    ? std::string("every sample in one cell, where the pdf puts all of it: nothing more to test\n")
+                    ? std::string(edges.empty() ? "every sample in one cell, where the pdf puts all of it: nothing "
+                                                  "more to test\n"
+                                                : "every sample in the cells on the edge of the pdf's support, "
+                                                  "pooled into one (a footprint this small is beyond the grid): "
+                                                  "nothing more to test\n")
                     : format("chi-square %.1f with %d degrees of freedom (after pooling sparse cells): p = %.3g\n",
                              result.test.statistic, result.test.degreesOfFreedom, result.test.pValue));
   }
