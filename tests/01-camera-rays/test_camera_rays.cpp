@@ -54,7 +54,11 @@ void checkRay(const Camera& camera, Point2 raster, IVec2 resolution, double tole
   CAPTURE(resolution.y);
   CAPTURE(camera.vfovDegrees);
   INFO("expected direction " << str(Vec3(expected)) << ", got " << str(ray.direction));
-  CHECK(near(ray.origin, camera.position, 0.0f));
+  {
+    HINT("the ray must start exactly at camera.position: an origin on the image plane, at the world origin, or "
+         "moved along the direction fails here");
+    CHECK(near(ray.origin, camera.position, 0.0f));
+  }
   CHECK(glm::length(DVec3(ray.direction) - expected) <= tolerance);
 }
 
@@ -70,13 +74,20 @@ void checkOrthonormal(const CameraBasis& b) {
   REQUIRE(finite(b.forward));
   REQUIRE(finite(b.right));
   REQUIRE(finite(b.up));
+  HINT("forward, right and up must each be unit length: normalise lookAt - position and the cross product that "
+       "gives right (the fallback's too); a missing normalize(), or camera.up kept as the frame's up, fails here");
   CHECK(std::abs(glm::length(b.forward) - 1.0f) < 1e-5f);
   CHECK(std::abs(glm::length(b.right) - 1.0f) < 1e-5f);
   CHECK(std::abs(glm::length(b.up) - 1.0f) < 1e-5f);
+  HINT("forward, right and up must be mutually perpendicular: camera.up need not be perpendicular to the view, so "
+       "rebuild up' = right x forward instead of keeping it, and take right from a cross product with forward (a "
+       "fixed axis as the fallback right is not perpendicular)");
   CHECK(std::abs(glm::dot(b.forward, b.right)) < 1e-5f);
   CHECK(std::abs(glm::dot(b.forward, b.up)) < 1e-5f);
   CHECK(std::abs(glm::dot(b.right, b.up)) < 1e-5f);
   // right = forward x up: a right-handed frame looking down its -z axis.
+  HINT("the frame must be right-handed, right = forward x up': up' = cross(right, forward) in that order; up' = "
+       "cross(forward, right), whatever order gave right, mirrors the frame and fails here");
   CHECK(near(glm::cross(b.forward, b.up), b.right, 1e-5f));
 }
 
@@ -89,6 +100,8 @@ TEST_CASE("T1.1 pixel sample: u = (0.5, 0.5) is the pixel centre (half-pixel off
     Point2 p = candidate::pixelSamplePosition(pixel, Vec2(0.5f));
     CAPTURE(pixel.x);
     CAPTURE(pixel.y);
+    HINT("u = (0.5, 0.5) must land on the pixel centre (i + 0.5, j + 0.5), i the column and j the row: returning the "
+         "corner (i, j), adding another 0.5 to pixel + u, or swapping x and y fails here");
     CHECK(p.x == doctest::Approx(pixel.x + 0.5f).epsilon(1e-7));
     CHECK(p.y == doctest::Approx(pixel.y + 0.5f).epsilon(1e-7));
   }
@@ -107,6 +120,8 @@ TEST_CASE("T1.1 pixel sample: u spreads samples uniformly over the whole pixel" 
       Point2 p = candidate::pixelSamplePosition(pixel, u) - Point2(pixel);
       CAPTURE(u.x);
       CAPTURE(u.y);
+      HINT("every u in [0,1)^2 must land inside the pixel's square [i, i+1] x [j, j+1]: an offset added to pixel + u "
+           "(such as another 0.5), or u scaled by more than 1, puts samples outside");
       REQUIRE(p.x >= 0.0f);
       REQUIRE(p.x <= 1.0f);
       REQUIRE(p.y >= 0.0f);
@@ -118,11 +133,16 @@ TEST_CASE("T1.1 pixel sample: u spreads samples uniformly over the whole pixel" 
     for (int c = 0; c < 4; ++c) {
       CAPTURE(r);
       CAPTURE(c);
+      HINT("equal areas of u must cover equal areas of the pixel: a 16 x 16 grid of u must put 16 samples in each of "
+           "the pixel's 4 x 4 sub-squares; a fixed centre, u scaled by 0.5, or a non-linear map of u (such as u * u) "
+           "fails here");
       CHECK(counts[r][c] == 16);
     }
   // The extremes of u stay inside the pixel.
   for (Vec2 u : {Vec2(0.0f), Vec2(0.99999994f), Vec2(0.0f, 0.99999994f)}) {
     Point2 p = candidate::pixelSamplePosition(pixel, u);
+    HINT("the extremes u = 0 and u just below 1 must stay inside pixel (12, 34), i.e. in [12, 13] x [34, 35]: an "
+         "offset added to pixel + u, or a map of u that overshoots at its ends, fails here");
     CHECK(p.x >= 12.0f);
     CHECK(p.x <= 13.0f);
     CHECK(p.y >= 34.0f);
@@ -136,12 +156,21 @@ TEST_CASE("T1.2 camera basis: orthonormal, right-handed, forward points at lookA
                      "may have any length: normalise it before judging the cross product's size")) {
   for (const Camera& camera : someCameras()) {
     CameraBasis b = candidate::cameraBasis(camera);
+    HINT("forward, right and up must be finite (no NaN or inf) for ordinary cameras, with up not parallel to the "
+         "view: a NaN comes from normalize() of a zero vector or from dividing by a zero length");
     checkOrthonormal(b);
     Vec3 forward = glm::normalize(camera.lookAt - camera.position);
     INFO("expected forward " << str(forward) << ", got " << str(b.forward));
+    HINT("forward must be normalize(lookAt - position): the unit vector from the camera towards lookAt, not the "
+         "reverse, not unnormalised");
     CHECK(near(b.forward, forward, 1e-5f));
     // The image's up agrees with the requested up, and the horizon is level.
+    HINT("the frame's up must point the same way as camera.up: right = forward x up, then up' = right x forward; "
+         "one of these cross products in the wrong order turns up' (and the image) upside down");
     CHECK(glm::dot(b.up, camera.up) > 0.0f);
+    HINT("right must be perpendicular to camera.up (a level horizon): right = normalize(forward x up) with the "
+         "camera's up; a fixed world up instead of camera.up, or the fallback taken when up is not parallel to the "
+         "view, tilts it");
     CHECK(std::abs(glm::dot(b.right, glm::normalize(camera.up))) < 1e-5f);
     // up gives a direction, whatever its length.
     for (float length : {1e-6f, 1e6f}) {
@@ -151,6 +180,9 @@ TEST_CASE("T1.2 camera basis: orthonormal, right-handed, forward points at lookA
       const CameraBasis s = candidate::cameraBasis(scaled);
       INFO("up scaled by " << length << ": right " << str(s.right) << " up " << str(s.up) << "; at length 1: right "
                            << str(b.right) << " up " << str(b.up));
+      HINT("camera.up 1e-6 or 1e6 long must give the same right and up as at length 1: judge the cross product's "
+           "size with up normalised first; a fixed threshold on |forward x up| with the raw up takes the fallback "
+           "for a short up and changes the frame");
       CHECK(near(s.right, b.right, 1e-5f));
       CHECK(near(s.up, b.up, 1e-5f));
     }
@@ -168,9 +200,17 @@ TEST_CASE("T1.2 camera basis: up parallel to the view direction still gives a fi
   };
   for (const Camera& camera : cameras) {
     CameraBasis b = candidate::cameraBasis(camera);
+    HINT("with up parallel to the view, forward, right and up must still be finite: cross(forward, up) is zero "
+         "there and normalize() of it is NaN, so detect a tiny cross product and use another vector perpendicular "
+         "to forward");
     checkOrthonormal(b);
+    HINT("forward must stay normalize(lookAt - position) when up is parallel to it: the fallback replaces the "
+         "vector crossed with forward, never forward itself");
     CHECK(near(b.forward, glm::normalize(camera.lookAt - camera.position), 1e-5f));
     Ray ray = candidate::generateCameraRay(camera, b, Point2(0.0f), IVec2(64, 48));
+    HINT("the ray through an image corner must be finite with this frame: a NaN comes from a basis whose vectors "
+         "are not unit and perpendicular, or from generateCameraRay itself (normalize() of a zero vector, a "
+         "division by zero)");
     CHECK(finite(ray.direction));
   }
 }
@@ -210,7 +250,12 @@ TEST_CASE("T1.2 camera basis: the fallback works along every axis, near every ax
       CAPTURE(str(forward));
       CAPTURE(scale);
       CameraBasis b = candidate::cameraBasis(camera);
+      HINT("with up = +-forward on or within 1e-30 of an axis, forward, right and up must be finite: the vector "
+           "the fallback crosses with forward must never be (nearly) parallel to it, such as a fixed axis; take "
+           "the world axis least aligned with forward, or Duff et al.'s basis");
       checkOrthonormal(b);
+      HINT("forward must stay normalize(lookAt - position) when up is parallel to it: the fallback replaces the "
+           "vector crossed with forward, never forward itself");
       CHECK(near(b.forward, glm::normalize(camera.lookAt - camera.position), 1e-5f));
     }
   }
@@ -224,9 +269,17 @@ TEST_CASE("T1.2 camera basis: the fallback works along every axis, near every ax
     Camera camera = makeCamera({0, 0, 0}, forward, up, 45);
     CAPTURE(axis);
     CameraBasis b = candidate::cameraBasis(camera);
+    HINT("with up off forward by 1e-25, forward x up is about 1e-25 long and its squared length underflows to 0: "
+         "test its length against a small threshold, not the vector against exactly 0, so the fallback is taken and "
+         "the frame stays finite");
     checkOrthonormal(b);
+    HINT("forward must stay normalize(lookAt - position) when up is parallel to it: the fallback replaces the "
+         "vector crossed with forward, never forward itself");
     CHECK(near(b.forward, forward, 1e-6f));
     Ray ray = candidate::generateCameraRay(camera, b, Point2(3.0f, 5.0f), IVec2(64, 48));
+    HINT("the ray through raster (3, 5) must be finite with this frame: a NaN comes from a basis whose vectors are "
+         "not unit and perpendicular, or from generateCameraRay itself (normalize() of a zero vector, a division "
+         "by zero)");
     CHECK(finite(ray.direction));
   }
 }
@@ -235,6 +288,9 @@ TEST_CASE("T1.3 camera ray: the image centre looks straight along forward, from 
           grading(2, "the ray starts at camera.position; NDC (0, 0) must give direction = forward")) {
   for (const Camera& camera : someCameras()) {
     for (IVec2 resolution : {IVec2(64, 64), IVec2(800, 600), IVec2(101, 37)}) {
+      HINT("the image centre (W/2, H/2) must look exactly along forward: ndcX = 2x/W - 1 and ndcY = 1 - 2y/H are "
+           "both 0 there; a missing -1, an extra half pixel, integer division, or a wrong forward from cameraBasis "
+           "fails here");
       checkRay(camera, Point2(resolution) * 0.5f, resolution);
     }
   }
@@ -247,6 +303,9 @@ TEST_CASE("T1.3 camera ray: corners and edges of the image sit at the field of v
   for (const Camera& camera : someCameras()) {
     for (Point2 raster : {Point2(0, 0), Point2(320, 0), Point2(0, 240), Point2(320, 240), Point2(160, 0),
                           Point2(0, 120), Point2(80.25f, 200.5f)}) {
+      HINT("the corners and edges must look along the field of view's edges: half-height = tan(radians(vfov)/2), "
+           "half-width = aspect * half-height, ndcY = 1 - 2y/H; vfov in degrees inside tan, vfov taken as the half "
+           "angle, an unflipped y, a wrong right or up, or an unnormalised direction fails here");
       checkRay(camera, raster, resolution);
     }
   }
@@ -261,9 +320,13 @@ TEST_CASE("T1.3 camera ray: raster row 0 is the top of the image and column 0 th
   Ray left = candidate::generateCameraRay(camera, basis, {0.5f, 40.0f}, {100, 80});
   Ray right = candidate::generateCameraRay(camera, basis, {99.5f, 40.0f}, {100, 80});
   INFO("top " << str(top.direction) << " bottom " << str(bottom.direction));
+  HINT("raster row 0 must look up (+y) and the last row down: raster y grows downwards, so ndcY = 1 - 2y/H; an "
+       "unflipped y, or an up' pointing against camera.up, fails here");
   CHECK(top.direction.y > 0.1f);
   CHECK(bottom.direction.y < -0.1f);
   INFO("left " << str(left.direction) << " right " << str(right.direction));
+  HINT("column 0 must look left (-x) and the last column right (+x): ndcX = 2x/W - 1 and right = forward x up; a "
+       "flipped x, or right = up x forward, mirrors the image and fails here");
   CHECK(left.direction.x < -0.1f);
   CHECK(right.direction.x > 0.1f);
 }
@@ -273,6 +336,9 @@ TEST_CASE("T1.3 camera ray: non-square images keep square pixels (aspect = width
                      "vertical one; vfov is the vertical field of view")) {
   Camera camera = makeCamera({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 40);
   for (IVec2 resolution : {IVec2(400, 100), IVec2(100, 400), IVec2(641, 479), IVec2(3, 2)}) {
+    HINT("on non-square images the edge directions must match: half-width = aspect * half-height with aspect = "
+         "W / H computed in floats, and vfov the vertical angle; integer division, aspect = H / W, or the aspect "
+         "applied to the vertical extent fails here");
     for (Point2 raster : {Point2(0, 0), Point2(float(resolution.x), float(resolution.y) * 0.5f),
                           Point2(float(resolution.x) * 0.5f, float(resolution.y))}) {
       checkRay(camera, raster, resolution);
@@ -285,6 +351,9 @@ TEST_CASE("T1.3 camera ray: non-square images keep square pixels (aspect = width
     Vec3 dy = candidate::generateCameraRay(camera, basis, c + Point2(0, 1), resolution).direction;
     CAPTURE(resolution.x);
     CAPTURE(resolution.y);
+    HINT("one pixel step across and one step down from the centre must turn the ray by the same angle (square "
+         "pixels): scale only the horizontal extent by aspect = W / H as floats; integer division or the aspect on "
+         "the vertical extent fails here");
     CHECK(std::acos(std::min(1.0f, glm::dot(d0, dx))) ==
           doctest::Approx(std::acos(std::min(1.0f, glm::dot(d0, dy)))).epsilon(1e-2));
   }
@@ -296,6 +365,9 @@ TEST_CASE("T1.3 camera ray: extreme fields of view (0.001 and 179.9 degrees) sta
   for (float vfov : {0.001f, 1.0f, 120.0f, 179.9f}) {
     Camera camera = makeCamera({1, 2, 3}, {1, 2, 0}, {0, 1, 0}, vfov);
     for (Point2 raster : {Point2(0, 0), Point2(200, 150), Point2(400, 300), Point2(37.5f, 280)}) {
+      HINT("at vfov 0.001, 1, 120 and 179.9 degrees the direction must still match to 1e-5: half-height = "
+           "tan(radians(vfov)/2) on an image plane at distance 1, normalised last; vfov in degrees inside tan, vfov "
+           "as the half angle, or a method that loses float precision at tiny or huge tangents fails here");
       checkRay(camera, raster, {400, 300}, 1e-5);
     }
   }
@@ -309,12 +381,17 @@ TEST_CASE("T1.3 camera ray: half-pixel offset — pixel centres, not corners, ar
   CameraBasis basis = candidate::cameraBasis(camera);
   Ray centre = candidate::generateCameraRay(camera, basis, candidate::pixelSamplePosition({2, 1}, Vec2(0.5f)), {5, 3});
   INFO("direction " << str(centre.direction));
+  HINT("at u = (0.5, 0.5) the middle pixel of a 5 x 3 image must look straight along forward, and pixels (0, 0) "
+       "and (3, 1) of a 4 x 2 image in mirrored directions: raster = pixel + u already holds the half pixel, so "
+       "adding 0.5 again in generateCameraRay, or subtracting it, fails here");
   CHECK(near(centre.direction, Vec3(0, 0, -1), 1e-6f));
   // Symmetric pixels look symmetrically.
   Ray a = candidate::generateCameraRay(camera, basis, candidate::pixelSamplePosition({0, 0}, Vec2(0.5f)), {4, 2});
   Ray b = candidate::generateCameraRay(camera, basis, candidate::pixelSamplePosition({3, 1}, Vec2(0.5f)), {4, 2});
   INFO("pixel (0,0) " << str(a.direction) << " pixel (3,1) " << str(b.direction));
   CHECK(near(a.direction, Vec3(-b.direction.x, -b.direction.y, b.direction.z), 1e-6f));
+  HINT("the ray through pixel (0, 0)'s centre, raster (0.5, 0.5), of a 4 x 2 image must match the expected "
+       "direction: an extra or missing half pixel, or an error in the field of view or the aspect, fails here");
   checkRay(camera, candidate::pixelSamplePosition({0, 0}, Vec2(0.5f)), {4, 2});
 }
 

@@ -71,8 +71,15 @@ TEST_CASE("T2.1 triangle: a ray through the interior hits with the right t and b
                      "b1 = e1 / det, b2 = e2 / det, t = tScaled / det")) {
   // Exact case: unit triangle in z = 0, ray straight down onto (0.25, 0.5).
   auto hit = candidate::intersectTriangle(Ray{{0.25f, 0.5f, 2.0f}, {0, 0, -1}}, kAll, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  HINT("a ray straight down onto the unit triangle's interior must hit: a miss means the same-sign edge test "
+       "or the range test rejects a plain interior hit, e.g. a t of the wrong sign (z not scaled by Sz = 1 / "
+       "d.z) that falls outside (0, inf)");
   REQUIRE(hit.has_value());
+  HINT("t must be 2 here, the distance along the unit direction (0, 0, -1): t = tScaled / det with z scaled by "
+       "Sz = 1 / d.z; a missing Sz or z taken before the permutation and shear gives another t");
   CHECK(hit->t == doctest::Approx(2.0f).epsilon(1e-6));
+  HINT("b1 and b2 must be the weights of p1 and p2 (not p0) in p = (1 - b1 - b2) p0 + b1 p1 + b2 p2, here 0.25 "
+       "and 0.5: b1 = e1 / det, b2 = e2 / det; swapped weights or e0 / det fail here");
   CHECK(hit->b1 == doctest::Approx(0.25f).epsilon(1e-6));
   CHECK(hit->b2 == doctest::Approx(0.5f).epsilon(1e-6));
 
@@ -88,8 +95,15 @@ TEST_CASE("T2.1 triangle: a ray through the interior hits with the right t and b
     if (std::abs(glm::dot(glm::normalize(n), DVec3(ray.direction))) < 0.1) continue;  // no grazing here
     auto h = candidate::intersectTriangle(ray, kAll, p0, p1, p2);
     CAPTURE(i);
+    HINT("a ray onto a point well inside a random triangle, from either side, must hit: a miss points to "
+         "back-face culling, a permutation that does not put the direction's largest |component| on z, or a "
+         "range test that is wrong when det < 0");
     REQUIRE(h.has_value());
+    HINT("t must be the distance along the unit direction to the triangle's plane (relative 1e-4): t = tScaled "
+         "/ det with z scaled by Sz = 1 / d.z after the permutation; a missing Sz or unpermuted z fails here");
     CHECK(h->t == doctest::Approx(expected.t).epsilon(1e-4));
+    HINT("b1 and b2 must be the weights of p1 and p2 (not p0) in p = (1 - b1 - b2) p0 + b1 p1 + b2 p2, to "
+         "1e-4: b1 = e1 / det, b2 = e2 / det; swapped weights or the weight of p0 returned fail here");
     CHECK(std::abs(h->b1 - expected.b1) < 1e-4);
     CHECK(std::abs(h->b2 - expected.b2) < 1e-4);
   }
@@ -114,19 +128,34 @@ TEST_CASE("T2.1 triangle: rays beside the edges, behind the origin or outside th
       CAPTURE(axis);
       CAPTURE(flipped);
       // Inside, as a control: this one must hit.
+      HINT("a ray straight onto the interior must hit for the triangle in each axis plane and both windings: a "
+           "miss points to back-face culling (det < 0 rejected), a permutation not chosen by the largest "
+           "|component|, or a range test wrong for det < 0");
       REQUIRE(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, 1), down}, kAll, p0, p1, p2).has_value());
       // Beside each of the three edges.
+      HINT("rays just beside each of the three edges must miss: hit only when e0, e1, e2 all have one sign "
+           "(all >= 0 or all <= 0); accepting mixed signs, testing only some edges, or a tolerance that lets "
+           "points 0.01 outside in fails here");
       CHECK_FALSE(candidate::intersectTriangle(Ray{at(0.2f, -0.01f, 1), down}, kAll, p0, p1, p2).has_value());
       CHECK_FALSE(candidate::intersectTriangle(Ray{at(-0.01f, 0.2f, 1), down}, kAll, p0, p1, p2).has_value());
       CHECK_FALSE(candidate::intersectTriangle(Ray{at(0.51f, 0.51f, 1), down}, kAll, p0, p1, p2).has_value());
       // Behind the origin: the triangle is at t = -1.
+      HINT("a triangle behind the ray's origin (at t = -1) must miss: t must be above range.min = 0; a missing "
+           "lower bound, or one that is wrong for one sign of det, fails here");
       CHECK_FALSE(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, -1), down}, kAll, p0, p1, p2).has_value());
       // Range: the hit is at t = 1.
+      HINT("the hit at t = 1 counts only when range.min < 1 < range.max: test both ends of the range, and if "
+           "you compare tScaled with range * det, reverse both comparisons when det < 0");
       CHECK_FALSE(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, 1), down}, {0.0f, 0.999f}, p0, p1, p2).has_value());
       CHECK_FALSE(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, 1), down}, {1.001f, kInfinity}, p0, p1, p2).has_value());
       CHECK(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, 1), down}, {0.999f, 1.001f}, p0, p1, p2).has_value());
       // From below (seen from the back side) the same range rules apply.
+      HINT("seen from below, the triangle's other face must be hit too (t = 1): rejecting det < 0 (back-face "
+           "culling) or a range test that only works for one sign of det fails here");
       CHECK(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, -1), up}, kAll, p0, p1, p2).has_value());
+      HINT("from below, the hit at t = 1 must miss in the range (0, 0.5): the upper end of the range must hold "
+           "for the other sign of det too (if you compare tScaled with range * det, the comparison reverses "
+           "when det < 0)");
       CHECK_FALSE(candidate::intersectTriangle(Ray{at(0.2f, 0.2f, -1), up}, {0.0f, 0.5f}, p0, p1, p2).has_value());
       // Exactly through an edge or a vertex (an edge function exactly 0):
       // hitting or missing there is the method's choice, but never outside
@@ -136,6 +165,9 @@ TEST_CASE("T2.1 triangle: rays beside the edges, behind the origin or outside th
         CAPTURE(q.x);
         CAPTURE(q.y);
         for (Vec3 d : {down, up}) {
+          HINT("through an edge or a vertex (an edge function exactly 0) hit or miss is your choice, but a hit "
+               "at t = 1 outside the range, or at t = -1 behind the origin, must be rejected: the edge case "
+               "(e.g. a double-precision recomputation) must not skip the range test");
           const Point3 origin = at(q.x, q.y, 0) - d;  // the triangle at t = 1
           CHECK_FALSE(candidate::intersectTriangle(Ray{origin, d}, {0.0f, 0.5f}, p0, p1, p2).has_value());
           CHECK_FALSE(candidate::intersectTriangle(Ray{origin, d}, {1.5f, kInfinity}, p0, p1, p2).has_value());
@@ -162,15 +194,27 @@ TEST_CASE("T2.1 triangle: the range is open — t exactly at range.min or range.
       CAPTURE(fromBelow);
       CAPTURE(flipped);
       auto hit = candidate::intersectTriangle(ray, kAll, p0, b, c);
+      HINT("this axis-aligned ray must hit the triangle at t = 2 from above and below with both windings: a "
+           "miss points to back-face culling or a range test wrong for one sign of det");
       REQUIRE(hit.has_value());
+      HINT("t must be exactly 2 here (integer vertices, an axis-aligned unit ray: exact in float for a correct "
+           "method): another value means t is not tScaled / det with z scaled by Sz = 1 / d.z, e.g. a sign or "
+           "scale slip for one direction");
       CHECK(hit->t == 2.0f);
+      HINT("accept only range.min < t < range.max: a hit exactly at either end is outside. When det < 0, "
+           "multiplying the range by det flips every comparison: write that case with each inequality "
+           "reversed, strict where the positive case is strict");
       CHECK_FALSE(candidate::intersectTriangle(ray, {2.0f, kInfinity}, p0, b, c).has_value());
       CHECK_FALSE(candidate::intersectTriangle(ray, {0.0f, 2.0f}, p0, b, c).has_value());
       CHECK_FALSE(candidate::intersectTriangle(ray, {2.0f, 2.0f}, p0, b, c).has_value());
+      HINT("a hit one float step inside either end of the range must count: a comparison that is too strict, a "
+           "margin on t, or inequalities not correctly reversed when det < 0 reject it");
       CHECK(candidate::intersectTriangle(ray, {below2, kInfinity}, p0, b, c).has_value());
       CHECK(candidate::intersectTriangle(ray, {0.0f, above2}, p0, b, c).has_value());
       CHECK(candidate::intersectTriangle(ray, {below2, above2}, p0, b, c).has_value());
       CHECK(candidate::intersectTriangle(ray, {1.5f, 2.5f}, p0, b, c).has_value());
+      HINT("t = 2 lies outside the ranges (2.5, 3) and (0.5, 1.5) and must miss: test both ends of the range, "
+           "with both comparisons reversed when det < 0");
       CHECK_FALSE(candidate::intersectTriangle(ray, {2.5f, 3.0f}, p0, b, c).has_value());
       CHECK_FALSE(candidate::intersectTriangle(ray, {0.5f, 1.5f}, p0, b, c).has_value());
     }
@@ -214,17 +258,30 @@ TEST_CASE("T2.1 triangle: the range holds at every scale, from both sides and al
       CAPTURE(i);
       CAPTURE(str(Vec3(direction)));
       CAPTURE(t);
+      HINT("a ray onto the interior of a well-shaped triangle must hit at scales 1e-3 to 1e5, also along or "
+           "near an axis: a threshold on det, back-face culling, or a permutation that does not put the "
+           "largest |component| on z (dividing by ~0 in the shear) fails here");
       REQUIRE(candidate::intersectTriangle(ray, kAll, p0, p1, p2).has_value());
+      HINT("a hit at t must count in ranges around t (0.9 t to 1.1 t, 0.999 t to 1e3 t): compare tScaled with "
+           "range * det (never range / det, no threshold on det) for either sign of det; a t off by a factor "
+           "fails here too");
       CHECK(in(0.9, 1.1));
       CHECK(in(0.999, 1e3));
+      HINT("a hit at t must miss in ranges that end 1% before t or start 1% after it, at every scale: test "
+           "both ends of the range whatever the size and sign of det, as tScaled against range * det, never "
+           "range / det");
       CHECK_FALSE(in(0.0, 0.99));
       CHECK_FALSE(in(0.5, 0.99));
       CHECK_FALSE(in(1.01, 1e3));
       // The ray turned around: the triangle is behind its origin.
+      HINT("the same ray turned around has the triangle behind its origin (t < 0) and must miss: the lower end "
+           "range.min = 0 must be tested for both signs of det and at every scale");
       CHECK_FALSE(candidate::intersectTriangle(Ray{ray.origin, -ray.direction}, kAll, p0, p1, p2).has_value());
       ++checked;
     }
   }
+  HINT("this counts the random triangles the test used and does not depend on your code: if it fails, report "
+       "it to the course staff");
   CHECK(checked > 400);
 }
 
@@ -239,6 +296,9 @@ TEST_CASE("T2.1 triangle: both faces are hit (no back-face culling)" *
     DVec3 centroid = (DVec3(p0) + DVec3(p1) + DVec3(p2)) / 3.0;
     DVec3 side = glm::normalize(n) * 2.0;
     CAPTURE(i);
+    HINT("rays onto the centroid from both sides must hit: accepting only one sign of det, only edge functions "
+         "all >= 0 (not also all <= 0), or a range test that works for one sign of det loses one face (which "
+         "one depends on your sign convention)");
     CHECK(candidate::intersectTriangle(rayTowards(centroid + side, centroid), kAll, p0, p1, p2).has_value());
     CHECK(candidate::intersectTriangle(rayTowards(centroid - side, centroid), kAll, p0, p1, p2).has_value());
   }
@@ -277,6 +337,9 @@ TEST_CASE("T2.1 triangle: shared edges and vertices of a closed mesh are crossed
     }
   }
   INFO(wrong << " of " << rays.size() << " rays through edges and vertices did not cross the closed mesh exactly twice");
+  HINT("rays through a closed mesh's edges and vertices must enter and leave once: a ray slipping between two "
+       "triangles points to an epsilon, edge functions not exactly opposite on a shared edge, or no "
+       "double-precision recomputation when one is exactly 0; an extra crossing to neighbours disagreeing on t");
   CHECK(wrong == 0);
 
   // A flat grid whose edges and vertices sit on exact integers: rays
@@ -295,6 +358,9 @@ TEST_CASE("T2.1 triangle: shared edges and vertices of a closed mesh are crossed
   int gridWrong = 0;
   for (int n : crossings(grid, gridRays)) gridWrong += n != 1;
   INFO(gridWrong << " of " << gridRays.size() << " rays through grid edges and vertices did not cross it exactly once");
+  HINT("rays exactly through the flat grid's edges and vertices (edge functions exactly 0) must hit at least "
+       "one triangle: strict tests (all e > 0), an epsilon, edge functions not exactly opposite on a shared "
+       "edge, or a zero edge function treated as a miss leak here");
   CHECK(gridWrong == 0);
 }
 
@@ -306,13 +372,20 @@ TEST_CASE("T2.1 triangle: a ray lying in the triangle's plane misses, and nothin
                   Ray{{-1, -1, 0}, glm::normalize(Vec3(1, 1, 0))}, Ray{{0.1f, 0.1f, 0}, {1, 0, 0}}}) {
     CAPTURE(str(ray.origin));
     CAPTURE(str(ray.direction));
+    HINT("a ray in the triangle's plane sees it edge-on (det = 0) and must miss: reject det = 0 explicitly; t "
+         "= tScaled / 0 is NaN or inf, and a range test written as 'reject if t <= min or t >= max' lets a NaN "
+         "through");
     CHECK_FALSE(candidate::intersectTriangle(ray, kAll, p0, p1, p2).has_value());
   }
   // Control: tilt the first ray slightly out of the plane and it hits, at
   // (0.25, 0.25, 0), well inside (not on an edge, where any answer is fair).
   Ray tilted{{-1, 0.25f, 0.0125f}, glm::normalize(Vec3(1.25f, 0, -0.0125f))};
   auto hit = candidate::intersectTriangle(tilted, kAll, p0, p1, p2);
+  HINT("a ray tilted slightly out of the plane (small but nonzero det) must hit at (0.25, 0.25, 0), well "
+       "inside: a threshold on det or on the ray's angle to the plane rejects it");
   REQUIRE(hit.has_value());
+  HINT("t, b1 and b2 of a nearly edge-on hit must be finite: divide by det only after rejecting det = 0, and "
+       "never by a direction component other than the largest (the permutation must put it on z)");
   CHECK(std::isfinite(hit->t));
   CHECK(std::isfinite(hit->b1));
   CHECK(std::isfinite(hit->b2));
@@ -338,11 +411,16 @@ TEST_CASE("T2.1 triangle: zero-area triangles are never hit" *
         CAPTURE(str(t.p0));
         CAPTURE(str(t.p1));
         CAPTURE(str(t.p2));
+        HINT("a zero-area triangle (collinear or repeated vertices) must never be hit from any direction: it "
+             "has no normal; reject it when det = 0 or when (p1 - p0) x (p2 - p0) is zero (det alone may round "
+             "to a tiny nonzero value)");
         CHECK_FALSE(candidate::intersectTriangle(ray, kAll, t.p0, t.p1, t.p2).has_value());
       }
     }
   }
   // Control: a proper triangle next to them is hit.
+  HINT("a proper triangle must still be hit straight onto its interior: a degenerate-triangle test that also "
+       "rejects real triangles (e.g. a threshold on the area or the normal's length) fails here");
   CHECK(candidate::intersectTriangle(Ray{{0.2f, 0.2f, 1}, {0, 0, -1}}, kAll, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}).has_value());
 }
 
@@ -375,13 +453,23 @@ TEST_CASE("T2.1 triangle: hits and misses are exact at scales 1e-3..1e5 and far 
         CAPTURE(away);
         CAPTURE(i);
         auto h = candidate::intersectTriangle(hitRay, kAll, p0, p1, p2);
+        HINT("a ray onto a point well inside the triangle (every barycentric >= 0.05) must hit at scales 1e-3 "
+             "to 1e5, also far from the origin: an absolute epsilon on det, t or the edge functions, or "
+             "back-face culling, loses these hits");
         REQUIRE(h.has_value());
+        HINT("t must match the distance along the unit direction to relative 1e-4 at every scale and far from "
+             "the origin: an absolute epsilon in the formula, or z not scaled by Sz = 1 / d.z, fails here");
         CHECK(h->t == doctest::Approx(expected.t).epsilon(1e-4));
+        HINT("a ray onto a point outside the triangle (one barycentric <= -0.05) must miss at every scale: an "
+             "absolute tolerance that accepts slightly negative edge functions or barycentrics lets it through "
+             "on small triangles");
         CHECK_FALSE(candidate::intersectTriangle(missRay, kAll, p0, p1, p2).has_value());
         ++checked;
       }
     }
   }
+  HINT("this counts the random triangles the test used and does not depend on your code: if it fails, report "
+       "it to the course staff");
   CHECK(checked > 2000);
 }
 
@@ -420,7 +508,14 @@ TEST_CASE("T2.1 triangle: every triangle of a scan-sized mesh (65,024 triangles 
     }
   }
   INFO(missed << " misses and " << wrongT << " wrong distances over " << tested << " triangles");
+  HINT("this counts the triangles the test could use and does not depend on your code: if it fails, report it "
+       "to the course staff");
   CHECK(tested > 60000);
+  HINT("every triangle of the scan-sized mesh (~1.5e-3 across, det ~ 1e-6) must be hit at its centroid: an "
+       "absolute epsilon on det or on the edge functions, such as |det| < 1e-6, rejects thousands of true hits");
   CHECK(missed == 0);
+  HINT("each hit on these tiny triangles must have t within relative 1e-4 of the distance to the plane: an "
+       "absolute epsilon in the t formula (e.g. dividing by det + eps) or z not scaled by Sz = 1 / d.z fails "
+       "here");
   CHECK(wrongT == 0);
 }

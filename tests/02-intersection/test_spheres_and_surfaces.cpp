@@ -70,10 +70,18 @@ TEST_CASE("T2.2 sphere: a ray from outside hits the near side at the right t" *
     Ray ray = rayPastSphere(random, center, radius, distance, random.uniform(0.0, 0.95));
     if (glm::length(DVec3(ray.origin) - DVec3(center)) < 1.01 * radius) continue;  // outside only
     double expected = sphereOracle(ray, center, radius);
+    HINT("a check of the test itself: the judge's double-precision solve finds that its ray, built to pass "
+         "within the radius, hits the sphere (no code of yours runs here); a failure is the judge's, not yours");
     REQUIRE(expected > 0);
     auto t = candidate::intersectSphere(ray, kAll, center, radius);
     CAPTURE(i);
+    HINT("a ray from outside whose line passes within 0.95 r of the centre must hit: a miss points to f = c - "
+         "o instead of o - c (both roots come out negative), a wrong discriminant, or a root in range that was "
+         "rejected");
     REQUIRE(t.has_value());
+    HINT("t must be the smaller positive root, the distance to the near side (to 1e-4 relative), also when the "
+         "ray starts close to the sphere: the far root, or roots from a formula that mixes b = 2 f.d with the "
+         "b' = f.d form, fail here");
     CHECK(*t == doctest::Approx(expected).epsilon(1e-4));
   }
 }
@@ -84,13 +92,23 @@ TEST_CASE("T2.2 sphere: misses beside, behind and outside the range; the far sid
   const Point3 c{0, 0, -5};
   const float r = 1.0f;
   const Ray ahead{{0, 0, 0}, {0, 0, -1}};  // roots at t = 4 and t = 6
+  HINT("a ray straight at the sphere, with roots t = 4 and t = 6, must hit at the near root 4: a miss or 6 "
+       "means the roots are wrong (f = c - o negates them) or the larger root was returned first");
   REQUIRE(candidate::intersectSphere(ahead, kAll, c, r).has_value());
   CHECK(*candidate::intersectSphere(ahead, kAll, c, r) == doctest::Approx(4.0f));
+  HINT("a ray passing 1.01 r from the centre must miss: a negative discriminant is a miss, so a hit means a "
+       "wrong discriminant, |D| used, or the sign of D tested the wrong way round");
   CHECK_FALSE(candidate::intersectSphere(Ray{{1.01f, 0, 0}, {0, 0, -1}}, kAll, c, r).has_value());   // beside
+  HINT("a sphere behind the ray (roots t = -4 and -6) must miss: roots below range.min = 0 are not hits, so "
+       "a hit means a negative root, or its absolute value, was returned");
   CHECK_FALSE(candidate::intersectSphere(Ray{{0, 0, 0}, {0, 0, 1}}, kAll, c, r).has_value());        // behind
+  HINT("with the range (0, 3.9) or (6.1, inf) neither root (4 or 6) is inside it, so there is no hit: each "
+       "root must be checked against both range.min and range.max before it is returned");
   CHECK_FALSE(candidate::intersectSphere(ahead, {0.0f, 3.9f}, c, r).has_value());                    // too near
   CHECK_FALSE(candidate::intersectSphere(ahead, {6.1f, kInfinity}, c, r).has_value());               // too far
   auto far = candidate::intersectSphere(ahead, {4.5f, kInfinity}, c, r);                             // skip the near root
+  HINT("with range.min = 4.5 between the roots the answer is the far root 6: a near root below range.min "
+       "must fall through to the far root, not end in a miss or be returned anyway");
   REQUIRE(far.has_value());
   CHECK(*far == doctest::Approx(6.0f));
 }
@@ -103,21 +121,37 @@ TEST_CASE("T2.2 sphere: the range is open — a root exactly at range.min or ran
   const Point3 c{0, 0, -5};
   const float r = 3.0f;
   auto hit = [&](float lo, float hi) { return candidate::intersectSphere(ray, {lo, hi}, c, r); };
+  HINT("with the range (0, inf) the answer is the near root, exactly t = 2 (exact in float for any correct "
+       "formula): a miss or another value means the roots are wrong or the far root was returned");
   REQUIRE(hit(0.0f, kInfinity).has_value());
   CHECK(*hit(0.0f, kInfinity) == 2.0f);
+  HINT("a root equal to range.min is outside the open range: with the range (2, inf) the answer is the far "
+       "root 8, so 2 means t >= range.min was used instead of t > range.min, and a miss that the far root "
+       "was not tried");
   REQUIRE(hit(2.0f, kInfinity).has_value());  // the near root is excluded: the far one
   CHECK(*hit(2.0f, kInfinity) == 8.0f);
+  HINT("with the roots 2 and 8 exactly at the ends of (0, 2), (2, 8) and (8, inf) there is no hit: a hit "
+       "means an end of the range was counted as inside it (<= or >= instead of range.contains)");
   CHECK_FALSE(hit(0.0f, 2.0f).has_value());
   CHECK_FALSE(hit(2.0f, 8.0f).has_value());
   CHECK_FALSE(hit(8.0f, kInfinity).has_value());
+  HINT("one float inside the range a root counts: range.min just below 2 must give 2, and range.max just "
+       "above 8 must give 8; a miss or the other root means an epsilon or a shrunken range, or a root "
+       "rounded off its exact value");
   REQUIRE(hit(std::nextafter(2.0f, 0.0f), kInfinity).has_value());
   CHECK(*hit(std::nextafter(2.0f, 0.0f), kInfinity) == 2.0f);
   REQUIRE(hit(3.0f, std::nextafter(8.0f, 9.0f)).has_value());
   CHECK(*hit(3.0f, std::nextafter(8.0f, 9.0f)) == 8.0f);
   // From inside (the origin at the centre): the roots are -3 and 3.
   const Ray inside{{0, 0, -5}, {0, 0, -1}};
+  HINT("from the centre the roots are -3 and 3: with 3 exactly at range.max (0, 3) or at range.min (3, inf) "
+       "there is no hit; a hit means an end of the range was counted as inside it, or the negative root was "
+       "returned");
   CHECK_FALSE(candidate::intersectSphere(inside, {0.0f, 3.0f}, c, r).has_value());
   CHECK_FALSE(candidate::intersectSphere(inside, {3.0f, kInfinity}, c, r).has_value());
+  HINT("from the centre (roots -3 and 3) the range (0, 3 + one float) holds the root 3: a miss means the "
+       "search stopped at the negative root instead of trying the other one, or an epsilon narrowed the "
+       "range");
   REQUIRE(candidate::intersectSphere(inside, {0.0f, std::nextafter(3.0f, 4.0f)}, c, r).has_value());
 }
 
@@ -133,7 +167,12 @@ TEST_CASE("T2.2 sphere: from inside, the hit is on the far side (origin inside)"
     double expected = sphereOracle(ray, center, radius);
     auto t = candidate::intersectSphere(ray, kAll, center, radius);
     CAPTURE(i);
+    HINT("from inside the sphere the near root is negative and the far one positive: a miss means the negative "
+         "root ended the search instead of falling through to the positive one (t1 = q / a or c' / q, "
+         "whichever is in range)");
     REQUIRE(t.has_value());
+    HINT("t must be the positive root, the distance to the far side (to 1e-4 relative): the negative root "
+         "returned without a range check, or a root from a wrong formula, fails here");
     CHECK(*t == doctest::Approx(expected).epsilon(1e-4));
   }
 }
@@ -177,11 +216,21 @@ TEST_CASE("T2.2 sphere: tangent rays — just inside hits, just outside misses, 
     Ray exact = rayPastSphere(random, center, radius, 5.0 * radius, 1.0);
     CAPTURE(i);
     auto hit = candidate::intersectSphere(inside, kAll, center, radius);
+    HINT("a ray passing 0.999 r from the centre must hit: a miss means the discriminant of this near-tangent "
+         "ray came out negative, from a wrong formula for it or one that loses its tiny value to cancellation");
     REQUIRE(hit.has_value());
+    HINT("a hit near or at tangency must have a finite t, never NaN or Inf: treat D < 0 as a miss before "
+         "taking sqrt, and test roots with range.contains, which a NaN fails");
     CHECK(std::isfinite(*hit));
+    HINT("t must be the near root to 1e-3 relative: near tangency the two roots are close, so the far root, or "
+         "a root that lost precision (a discriminant or root formula with cancellation), fails here");
     CHECK(*hit == doctest::Approx(sphereOracle(inside, center, radius)).epsilon(1e-3));
+    HINT("a ray passing 1.001 r from the centre must miss: a hit means the discriminant came out >= 0 instead "
+         "of negative, from a wrong formula for it (b = 2 f.d mixed with the b' = f.d form) or cancellation");
     CHECK_FALSE(candidate::intersectSphere(outside, kAll, center, radius).has_value());
     auto grazing = candidate::intersectSphere(exact, kAll, center, radius);
+    HINT("a hit near or at tangency must have a finite t, never NaN or Inf: treat D < 0 as a miss before "
+         "taking sqrt, and test roots with range.contains, which a NaN fails");
     if (grazing) CHECK(std::isfinite(*grazing));
   }
 }
@@ -202,8 +251,17 @@ TEST_CASE("T2.2 sphere: a ray starting on the surface finds the far side going i
       CAPTURE(radius);
       CAPTURE(i);
       auto t = candidate::intersectSphere(Ray{origin, Vec3(in)}, range, center, float(radius));
+      HINT("from a point on the surface heading in, with range.min = 1e-4 r just above the root ~0, the far root "
+           "must be found: a miss means the near root ended the search instead of falling through, or an "
+           "absolute epsilon rejected the far root of a small sphere");
       REQUIRE(t.has_value());
+      HINT("heading in from the surface, t must be the far root -2 r dot(d, n), the chord's length, to 1e-3 at "
+           "radii 1e-3 to 1e3: the near root ~0 returned, or a far root that lost precision to cancellation, "
+           "fails here");
       CHECK(*t == doctest::Approx(-2.0 * radius * glm::dot(in, normal)).epsilon(1e-3));
+      HINT("heading out from the surface the roots are ~0 and negative, both below range.min = 1e-4 r: a hit "
+           "means range.min was ignored (the root ~0, positive by rounding, was returned) or a negative root was "
+           "accepted");
       CHECK_FALSE(candidate::intersectSphere(Ray{origin, Vec3(-in)}, range, center, float(radius)).has_value());
     }
   }
@@ -211,6 +269,9 @@ TEST_CASE("T2.2 sphere: a ray starting on the surface finds the far side going i
   // (0, inf): no hit.
   for (Vec3 direction : {Vec3(0, 0, 1), Vec3(0, -1, 0), Vec3(0, 0.6f, -0.8f)}) {
     CAPTURE(str(direction));
+    HINT("exactly on the surface and tangent to it both roots are t = 0, outside (0, inf): a hit means t = 0 "
+         "was counted (t >= range.min), or a NaN root from 0 / 0 (c' / q with q = 0) slipped past the range "
+         "test");
     CHECK_FALSE(candidate::intersectSphere(Ray{{3.0f, 1.0f, 2.0f}, direction}, kAll, {1.0f, 1.0f, 2.0f}, 2.0f)
                     .has_value());
   }
@@ -231,9 +292,15 @@ TEST_CASE("T2.3 triangle surface point: position from barycentrics, normal from 
     DVec3 point = (1.0 - b1 - b2) * DVec3(p0) + double(b1) * DVec3(p1) + double(b2) * DVec3(p2);
     CAPTURE(i);
     INFO("expected point " << str(Vec3(point)) << ", got " << str(s.point));
+    HINT("the point must be b0 p0 + b1 p1 + b2 p2 with b0 = 1 - b1 - b2 (to 1e-5): weights on the wrong "
+         "vertices (b1 belongs to p1, b2 to p2) or a wrong b0 fails here");
     CHECK(glm::length(DVec3(s.point) - point) < 1e-5);
     INFO("expected normal " << str(Vec3(glm::normalize(n))) << ", got " << str(s.geometricNormal));
+    HINT("the geometric normal must be the unit normalize(cross(p1 - p0, p2 - p0)): the opposite winding (the "
+         "cross product's factors swapped) or a missing normalize fails here");
     CHECK(near(s.geometricNormal, Vec3(glm::normalize(n)), 1e-5f));
+    HINT("without vertex normals (normals == nullptr) the shading normal must equal the geometric normal: a "
+         "shading normal left unset, flipped or not normalised fails here");
     CHECK(near(s.shadingNormal, s.geometricNormal, 1e-6f));
   }
 }
@@ -246,20 +313,34 @@ TEST_CASE("T2.3 triangle surface point: vertex normals are interpolated and deci
   SurfacePoint s = candidate::triangleSurfacePoint(TriangleHit{1.0f, 0.5f, 0.25f}, p0, p1, p2, up);
   Vec3 expected = glm::normalize(0.25f * up[0] + 0.5f * up[1] + 0.25f * up[2]);
   INFO("expected shading normal " << str(expected) << ", got " << str(s.shadingNormal));
+  HINT("the shading normal must be normalize(b0 n0 + b1 n1 + b2 n2), the vertex normals blended with the "
+       "hit's barycentrics: weights on the wrong vertices, a missing normalize, or the geometric normal kept "
+       "instead fails here");
   CHECK(near(s.shadingNormal, expected, 1e-5f));
+  HINT("when the blended vertex normal is on the winding's side the geometric normal stays the unit winding "
+       "normal (+z here): replacing it with the shading normal, or flipping it, fails here");
   CHECK(near(s.geometricNormal, Vec3(0, 0, 1), 1e-6f));
 
   // Vertex normals pointing down: the geometric normal follows them.
   const Vec3 down[3] = {Vec3(0, 0, -1), glm::normalize(Vec3(0.2f, 0, -1)), Vec3(0, 0, -1)};
   s = candidate::triangleSurfacePoint(TriangleHit{1.0f, 0.2f, 0.3f}, p0, p1, p2, down);
+  HINT("with all vertex normals pointing down (against the winding) the shading normal must follow them: "
+       "turning it to the winding's side fails here");
   CHECK(s.shadingNormal.z < -0.9f);
+  HINT("when the blended vertex normal points against the winding normal the geometric normal must be "
+       "flipped to its side (-z here): the vertex normals decide the outside, so a geometric normal left on "
+       "the winding's side fails");
   CHECK(near(s.geometricNormal, Vec3(0, 0, -1), 1e-6f));
 
   // Opposite normals cancel: fall back to the geometric normal, never NaN.
   const Vec3 opposite[3] = {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(0, 0, 1)};
   s = candidate::triangleSurfacePoint(TriangleHit{1.0f, 0.5f, 0.0f}, p0, p1, p2, opposite);
+  HINT("when the vertex normals cancel (their blend is the zero vector) the shading normal must fall back to "
+       "the geometric normal: normalising the zero vector gives NaN");
   REQUIRE(finite(s.shadingNormal));
   CHECK(near(s.shadingNormal, s.geometricNormal, 1e-6f));
+  HINT("when the vertex normals cancel the geometric normal must stay a unit vector: one replaced by, or "
+       "scaled with, the zero blended normal fails here");
   CHECK(std::abs(glm::length(s.geometricNormal) - 1.0f) < 1e-6f);
 }
 
@@ -279,6 +360,8 @@ TEST_CASE("T2.4 sphere surface point: on the sphere, with the outward unit norma
     Ray ray = fromInside ? Ray{Point3(DVec3(center) + random.unitVector() * (0.5 * radius)), Vec3(random.unitVector())}
                          : rayPastSphere(random, center, radius, distance, random.uniform(0, 0.9));
     double t = sphereOracle(ray, center, radius);
+    HINT("a check of the test itself: the judge's double-precision solve finds the ray's hit on the sphere (no "
+         "code of yours runs here); a failure is the judge's, not yours");
     REQUIRE(t > 0);
     SurfacePoint s = candidate::sphereSurfacePoint(ray, float(t), center, radius);
     DVec3 expectedNormal = glm::normalize(DVec3(ray.origin) + t * DVec3(ray.direction) - DVec3(center));
@@ -287,9 +370,15 @@ TEST_CASE("T2.4 sphere surface point: on the sphere, with the outward unit norma
     // The hit point carries float rounding of the coordinates (~1e-7 of their
     // size); divided by a small radius that bends the normal a little.
     const double scale = glm::length(DVec3(ray.origin)) + glm::length(DVec3(center)) + t;
+    HINT("the normal must be the outward unit normalize(ray.at(t) - center), outward also when the ray starts "
+         "inside: a normal flipped towards the ray, not normalised, or taken from the wrong point fails here");
     CHECK(glm::length(DVec3(s.geometricNormal) - expectedNormal) < 1e-5 + 4e-7 * scale / radius);
+    HINT("on a sphere the shading normal must equal the geometric normal: a shading normal left unset or "
+         "different fails here");
     CHECK(near(s.shadingNormal, s.geometricNormal, 1e-6f));
     double off = std::abs(glm::length(DVec3(s.point) - DVec3(center)) - radius);
+    HINT("the point must lie on the sphere to float rounding: re-project it as center + radius * normal, since "
+         "from far away ray.at(t) misses the surface by about t times the float rounding");
     CHECK(off <= 1e-6 * (radius + glm::length(DVec3(center))));
   }
 }

@@ -144,22 +144,39 @@ TEST_CASE("T3.1 box: rays through, beside and behind a box, and the range, give 
   auto test = [&](Ray ray, Interval range) { return candidate::intersectBox(box, ray, 1.0f / ray.direction, range); };
   const Vec3 d = glm::normalize(Vec3(1, 1, 1));
   auto t = test(Ray{{0, 0, 0}, d}, kAll);  // enters at x = y = z = 1
+  HINT("a ray from (0, 0, 0) along the unit (1, 1, 1) direction passes through the box and must hit at its entry "
+       "t = sqrt(3): a miss means the entry/exit interval or the entry <= exit test is wrong; returning the exit "
+       "instead of the entry also fails here");
   REQUIRE(t.has_value());
   CHECK(*t == doctest::Approx(std::sqrt(3.0f)).epsilon(1e-6));
+  HINT("a ray pointing away from the box crosses its slabs only at negative t and must miss: an entry not clipped "
+       "to range.min (entry = max(range.min, ...)) accepts a box behind the origin");
   CHECK_FALSE(test(Ray{{0, 0, 0}, -d}, kAll).has_value());                       // behind
+  HINT("a ray passing beside the box crosses the three slabs in t intervals that do not overlap and must miss: "
+       "exit must be the min over the axes of max(t0, t1) and the hit needs entry <= exit; a max for the exit, or an "
+       "axis left out, fails here");
   CHECK_FALSE(test(Ray{{0, 5, 0}, d}, kAll).has_value());                        // beside
+  HINT("the range clips the box interval: a box entered after range.max, or left before range.min, must miss; an "
+       "entry not clipped to range.min or an exit not clipped to range.max fails here");
   CHECK_FALSE(test(Ray{{0, 0, 0}, d}, {0.0f, 1.5f}).has_value());                // range ends before it
   CHECK_FALSE(test(Ray{{0, 0, 0}, d}, {4.0f, kInfinity}).has_value());           // range starts after it
   auto inside = test(Ray{{1.5f, 2, 2}, d}, {0.25f, kInfinity});                  // starting inside
+  HINT("a ray starting inside the box must hit and return range.min (here 0.25), as the entry is clipped to the "
+       "range: a miss for an origin inside, or returning the unclipped negative entry or the exit, fails here");
   REQUIRE(inside.has_value());
   CHECK(*inside == doctest::Approx(0.25f));
   // Negative directions swap entry and exit.
   auto back = test(Ray{{3, 4, 5}, -d}, kAll);
+  HINT("a ray with negative direction components enters through the max planes and must hit at t = sqrt(3): "
+       "always taking (min - o) / d as the entry and (max - o) / d as the exit, without swapping them for a negative "
+       "direction, makes it miss or return the wrong t");
   REQUIRE(back.has_value());
   CHECK(*back == doctest::Approx(std::sqrt(3.0f)).epsilon(1e-6));
   // A flat box (zero thickness, e.g. around an axis-aligned quad) is hit.
   const Aabb flat{{0, 0, 2}, {1, 1, 2}};
   auto f = candidate::intersectBox(flat, Ray{{0.5f, 0.5f, 0}, {0, 0, 1}}, 1.0f / Vec3(0, 0, 1), kAll);
+  HINT("a flat box (min = max along z, as around an axis-aligned quad) must be hit at t = 2, where entry equals "
+       "exit: the hit test is entry <= exit, not entry < exit, and a zero extent is not an empty box");
   REQUIRE(f.has_value());
   CHECK(*f == doctest::Approx(2.0f));
 }
@@ -178,10 +195,16 @@ TEST_CASE("T3.1 box: axis-parallel rays (infinite inverse direction) hit inside 
       CAPTURE(axis);
       CAPTURE(sign);
       auto t = candidate::intersectBox(box, Ray{origin, d}, inv, kAll);
+      HINT("an axis-parallel ray 5 units from the box, inside the other two slabs, must hit at t = 4 in both "
+           "directions: a zero component's t0, t1 are -inf and +inf and set no limit; a special case that rejects "
+           "zero components, or no swap of t0, t1 for the negative direction, fails here");
       REQUIRE(t.has_value());
       CHECK(*t == doctest::Approx(4.0f));
       Point3 outside = origin;
       outside[(axis + 1) % 3] = 1.5f;  // parallel to the box, beside it
+      HINT("an axis-parallel ray beside the box (outside a slab it never crosses) must miss: that slab's t0 and t1 "
+           "are both -inf or both +inf, which empties the interval; skipping zero-direction axes without checking "
+           "that the origin lies within the slab fails here");
       CHECK_FALSE(candidate::intersectBox(box, Ray{outside, d}, inv, kAll).has_value());
     }
   }
@@ -212,7 +235,12 @@ TEST_CASE("T3.1 box: a ray lying exactly in a slab plane still hits (no NaN miss
       }
     }
   }
+  HINT("rays lying exactly in a box's min or max plane, with +0 or -0 components, must hit (misses listed above): "
+       "there (plane - o) * inf is NaN, which must leave entry and exit unchanged, and -0 has 1/d = -inf, so a near "
+       "plane picked by d < 0 rather than by the sign (std::signbit) is wrong");
   CHECK(misses == 0);
+  HINT("the test's own count of the 12 rays it tried (3 axes, 2 planes, +0 and -0): it does not depend on your "
+       "intersectBox's answers");
   CHECK(tried == 12);
 }
 
@@ -249,10 +277,16 @@ TEST_CASE("T3.2 build: many primitives with identical centroids — terminates, 
   scene.meshes.push_back(mesh);
   scene.indexPrimitives();
   Built b = build(scene);
+  HINT("the tree over 600 triangles sharing one centroid must be valid (the message above names the problem): no bin "
+       "split exists there, so a node of more than kMaxLeafSize primitives must still be split, in halves by index; "
+       "one huge leaf fails here");
   requireValid(b, scene.primitives.size());
   std::vector<Ray> rays;
   Random random(52);
   for (int i = 0; i < 200; ++i) rays.push_back(Ray{Point3(random.inCube(0.5)) + Vec3(0, 0, 3), {0, 0, -1}});
+  HINT("rays straight down onto the 600 coplanar triangles (every box flat in z) must hit or miss as brute force "
+       "does (mismatches listed above): a slab test that rejects a flat box (entry < exit instead of <=), or a "
+       "traversal that skips a child the ray enters, fails here");
   CHECK(compareWithBruteForce(scene, b, rays) == 0);
 }
 
@@ -298,7 +332,10 @@ TEST_CASE("T3.2 build: a single primitive and an empty scene" *
                      "gives a single leaf as the root")) {
   Scene empty;
   Built e = build(empty);
+  HINT("an empty input must give a Bvh with no nodes at all, not a root with an empty box or a count of 0");
   CHECK(e.bvh.nodes.empty());
+  HINT("both traversals of the tree built for an empty scene must find nothing (no hit, not blocked): one that "
+       "reads nodes[0] without checking bvh.nodes.empty(), or a node built for no primitives, fails here");
   CHECK_FALSE(candidate::intersectClosest(e.bvh, empty, Ray{}, kAll).has_value());
   CHECK_FALSE(candidate::intersectAny(e.bvh, empty, Ray{}, kAll));
 
@@ -307,12 +344,20 @@ TEST_CASE("T3.2 build: a single primitive and an empty scene" *
   one.spheres.push_back(Sphere{{0, 0, -5}, 1.0f, 0});
   one.indexPrimitives();
   Built b = build(one);
+  HINT("one primitive must give a valid tree (the message above names any problem) of exactly one node, the root, "
+       "a leaf with count 1 whose box holds the sphere's: splitting a single primitive, or adding children, fails here");
   requireValid(b, 1);
   CHECK(b.bvh.nodes.size() == 1);
   auto hit = candidate::intersectClosest(b.bvh, one, Ray{{0, 0, 0}, {0, 0, -1}}, kAll);
+  HINT("intersectClosest on a tree whose root is a leaf must find the sphere at t = 4: a traversal that treats the "
+       "root as an interior node (testing children instead of its primitives), or rejects the root's box, fails here");
   REQUIRE(hit.has_value());
   CHECK(hit->t == doctest::Approx(4.0f));
+  HINT("intersectAny on a tree whose root is a leaf must report the sphere in front of the ray as blocking: one "
+       "that only handles interior nodes at the root, or never tests the leaf's primitives, fails here");
   CHECK(candidate::intersectAny(b.bvh, one, Ray{{0, 0, 0}, {0, 0, -1}}, kAll));
+  HINT("intersectAny must report a ray pointing away from the only sphere as free: returning true without a "
+       "primitive test that hit within range (e.g. for reaching a leaf, or a box hit alone) fails here");
   CHECK_FALSE(candidate::intersectAny(b.bvh, one, Ray{{0, 0, 0}, {0, 0, 1}}, kAll));
 }
 
@@ -328,8 +373,13 @@ TEST_CASE("T3.2 build: the tree's SAH cost is close to the reference's (no huge 
   constexpr double kReferenceStrip = 7.20;
   Scene scan = scanLikeScene();
   Built b = build(scan);
+  HINT("the tree over the scan-like mesh must be valid before its cost is measured (the message above names the "
+       "node and the problem): a failure here is in the tree's structure, as in the first T3.2 test");
   requireValid(b, scan.primitives.size());
   INFO("scan-like mesh SAH cost " << sahCost(b.bvh) << ", reference " << kReferenceScan);
+  HINT("the scan-like mesh's SAH cost must be within 15 % of the reference's: evaluate 1 + (area(L) N_L + area(R) "
+       "N_R) / area(node) at every bin boundary, keep the cheapest, make a leaf only when N is cheaper; median or "
+       "middle splits, or bins over primitive boxes, not centroids, land far above");
   CHECK(sahCost(b.bvh) <= 1.15 * kReferenceScan);
   {
     // The leaderboard (ungraded): the tree's cost per ray, walked by the judge with its own traversal and
@@ -348,9 +398,14 @@ TEST_CASE("T3.2 build: the tree's SAH cost is close to the reference's (no huge 
     for (Point3& p : scaled.meshes[0].positions) p *= scale;
     scaled.indexPrimitives();
     Built s = build(scaled);
+    HINT("the tree over the scan-like mesh scaled by 1e-6 or 1e6 must be valid (the message above names the node "
+         "and the problem): when the unscaled tree passed, a fixed epsilon on extents (no split below it) is the likely cause");
     requireValid(s, scaled.primitives.size());
     INFO("the scan-like mesh scaled by " << scale << ": SAH cost " << sahCost(s.bvh) << ", reference "
                                          << kReferenceScan);
+    HINT("the same mesh a million times smaller or larger must cost about as much (the cost is a ratio of areas): "
+         "comparing extents or areas with a fixed epsilon such as 1e-6, instead of with 0, stops or spoils the "
+         "splits at one of the scales");
     CHECK(sahCost(s.bvh) <= 1.15 * kReferenceScan);
   }
 
@@ -363,16 +418,26 @@ TEST_CASE("T3.2 build: the tree's SAH cost is close to the reference's (no huge 
   for (const glm::uvec3& t : far.meshes[0].triangles) clusters.meshes[0].triangles.push_back(t + glm::uvec3(4000 * 3));
   clusters.indexPrimitives();
   Built c = build(clusters);
+  HINT("the tree over two clusters must be valid before its cost is measured (the message above names the node "
+       "and the problem): a failure here is in the tree's structure, as in the first T3.2 test");
   requireValid(c, clusters.primitives.size());
   INFO("clusters SAH cost " << sahCost(c.bvh) << ", reference " << kReferenceClusters);
+  HINT("on a dense and a sparse cluster the SAH cost must be within 15 % of the reference's: weigh each side's area "
+       "by its count, area(L) N_L + area(R) N_R, keep the cheapest boundary, and stop only when a leaf is cheaper; "
+       "median or spatial-middle splits land above");
   CHECK(sahCost(c.bvh) <= 1.15 * kReferenceClusters);
 
   // A strip along each axis in turn: every axis is binned at its own scale.
   for (int axis = 0; axis < 3; ++axis) {
     Scene strip = stripScene(axis);
     Built s = build(strip);
+    HINT("the tree over a long thin strip must be valid before its cost is measured (the message above names the "
+         "node and the problem): a failure here is in the tree's structure, as in the first T3.2 test");
     requireValid(s, strip.primitives.size());
     INFO("a strip along axis " << axis << ": SAH cost " << sahCost(s.bvh) << ", reference " << kReferenceStrip);
+    HINT("a strip 100 long, 1 wide and 0.02 thick along each axis in turn: split candidates must follow each axis's "
+         "own centroid extent; binning an axis at another axis's extent, bins over primitive boxes, or a fixed "
+         "epsilon on extents puts the splits in the wrong place");
     CHECK(sahCost(s.bvh) <= 1.15 * kReferenceStrip);
   }
 }
@@ -387,10 +452,15 @@ TEST_CASE("T3.3 closest hit: equals brute force on random scenes at scales 1e-3.
     for (DVec3 offset : {DVec3(0.0), DVec3(scale * 50, -scale * 20, scale * 10)}) {
       Scene scene = randomScene(random, 2000, 50, scale, offset);
       Built b = build(scene);
+      HINT("the tree over each random scene (scales 1e-3 to 1e5, some far from the origin) must be valid before "
+           "rays are traced (the message above names the node and the problem): a failure here is in buildBvh");
       requireValid(b, scene.primitives.size());
       std::vector<Ray> rays;
       for (int i = 0; i < 1000; ++i) rays.push_back(randomRay(random, scene, scale, offset));
       CAPTURE(scale);
+      HINT("closest hits must equal brute force (mismatches listed above): keep shrinking range.max to the closest hit "
+           "so far, test both children with it, skip popped nodes whose entry is beyond it, never stop at the first "
+           "hit found; a fixed epsilon fails at some scales");
       CHECK(compareWithBruteForce(scene, b, rays) == 0);
     }
   }
@@ -401,6 +471,8 @@ TEST_CASE("T3.3 closest hit: equals brute force on a scan-sized mesh (0.15 units
                      "absolute epsilons, and exits must be widened, not shrunk")) {
   Scene scan = scanLikeScene();
   Built b = build(scan);
+  HINT("the tree over the scan-like mesh must be valid before rays are traced (the message above names the node "
+       "and the problem): a failure here is in buildBvh");
   requireValid(b, scan.primitives.size());
   Random random(55);
   std::vector<Ray> rays;
@@ -409,6 +481,9 @@ TEST_CASE("T3.3 closest hit: equals brute force on a scan-sized mesh (0.15 units
     DVec3 target = DVec3(-0.02, 0.1, 0.0) + random.inCube(0.07);
     rays.push_back(Ray{Point3(origin), Vec3(glm::normalize(target - origin))});
   }
+  HINT("closest hits on a mesh 0.15 units across with 1e-3 triangles must equal brute force (mismatches listed "
+       "above): a slab test with absolute epsilons, exits shrunk instead of widened, or a traversal that keeps a hit "
+       "that is not the closest, fails here");
   CHECK(compareWithBruteForce(scan, b, rays) == 0);
 }
 
@@ -418,6 +493,8 @@ TEST_CASE("T3.3 closest hit: rays aimed exactly at vertices and edges, where the
                      "exit by 1 + 2 gamma(3) (the handout's PITFALL) so such boxes are never missed")) {
   Scene scan = scanLikeScene();
   Built b = build(scan);
+  HINT("the tree over the scan-like mesh must be valid before rays are traced (the message above names the node "
+       "and the problem): a failure here is in buildBvh");
   requireValid(b, scan.primitives.size());
   const TriangleMesh& mesh = scan.meshes.front();
   const Accelerator reference(scan, Traversal::Task3);  // the judge's reference tree: brute force checks its misses
@@ -431,6 +508,9 @@ TEST_CASE("T3.3 closest hit: rays aimed exactly at vertices and edges, where the
     const DVec3 origin = DVec3(target) + random.unitVector() * random.uniform(0.01, 0.3);
     rays.push_back(Ray{Point3(origin), Vec3(glm::normalize(DVec3(target) - origin))});
   }
+  HINT("rays aimed exactly at vertices and edge midpoints must find what brute force finds: they touch a leaf box at "
+       "a corner or along an edge, where rounding can put the exit a hair before the entry; multiply each exit by "
+       "1 + 2 gamma(3) so such boxes are never missed");
   CHECK(compareWithBruteForce(scan, b, rays, kAll, &reference) == 0);
 }
 
@@ -450,6 +530,8 @@ TEST_CASE("T3.3 closest hit: axis-parallel rays and rays lying on box planes fin
     }
   scene.indexPrimitives();
   Built b = build(scene);
+  HINT("the tree over the grid of clipped cubes must be valid before rays are traced (the message above names the "
+       "node and the problem): a failure here is in buildBvh");
   requireValid(b, scene.primitives.size());
   std::vector<Ray> rays;
   for (float u = -0.5f; u <= 7.5f; u += 0.5f) {
@@ -462,6 +544,9 @@ TEST_CASE("T3.3 closest hit: axis-parallel rays and rays lying on box planes fin
       }
     }
   }
+  HINT("axis-parallel rays, many lying exactly on the cubes' face planes with +0 or -0 components, must find what "
+       "brute force finds: compute 1 / direction once per ray and use the NaN-safe slab test (as in T3.1) for every "
+       "child box, with no special path for parallel rays");
   CHECK(compareWithBruteForce(scene, b, rays) == 0);
 }
 
@@ -473,6 +558,8 @@ TEST_CASE("T3.4 any hit: agrees with closest hit, and respects the range (shadow
   Random random(56);
   Scene scene = randomScene(random, 3000, 100, 1.0);
   Built b = build(scene);
+  HINT("the tree over the random scene must be valid before rays are traced (the message above names the node and "
+       "the problem): a failure here is in buildBvh");
   requireValid(b, scene.primitives.size());
   std::vector<calls::RayInRange> queries;
   for (int i = 0; i < 3000; ++i) {
@@ -489,6 +576,9 @@ TEST_CASE("T3.4 any hit: agrees with closest hit, and respects the range (shadow
                      << ": expected " << (expected ? "blocked" : "free"));
     }
   }
+  HINT("intersectAny must say blocked exactly when brute force finds a hit within the range (wrong rays listed "
+       "above): pass range unchanged to every box and primitive test, so a hit beyond range.max does not count, and "
+       "visit every child box the ray enters until a hit");
   CHECK(wrong == 0);
 }
 
@@ -500,14 +590,24 @@ TEST_CASE("T3.4 any hit: stops at the first hit (early exit), and counts its wor
   // must agree with it.
   Scene scene = stackedLayers(1000);
   Built b = build(scene);
+  HINT("the tree over 1000 stacked squares must be valid before rays are traced (the message above names the node "
+       "and the problem): a failure here is in buildBvh");
   requireValid(b, scene.primitives.size());
   const Ray ray{{0.1f, 0.2f, 1.0f}, {0, 0, -1}};
   const candidate::ServedTraversal t = candidate::traverseServed(b.bvh, scene, {{ray, kAll}}, true).at(0);
   INFO("primitives tested (counted by the judge) " << t.tested.size() << "; your count: primitive tests "
                                                    << t.stats.primitiveTests << ", nodes visited " << t.stats.nodesVisited);
+  HINT("a ray through 1000 stacked squares must be blocked: intersectAny returned false, so it found no hit where "
+       "every layer lies on the ray (a box or range test rejected them, or it gave up before testing a leaf)");
   REQUIRE(t.found);
+  HINT("all 2000 triangles lie on the ray, so an early exit tests only a few: 200 or more tests mean intersectAny "
+       "keeps looking (for the closest hit) after a primitive hit instead of returning true at once");
   CHECK(t.tested.size() < 200);  // all 2000 triangles lie on the ray: early exit tests few
+  HINT("stats->primitiveTests must equal the primitive tests the judge served: in intersectAny, increment it once "
+       "for every geometry.intersect call, the one that hits included");
   CHECK(t.stats.primitiveTests == t.tested.size());
+  HINT("stats->nodesVisited must count the nodes intersectAny processed, at least the root: count them in "
+       "intersectAny too, not only in intersectClosest");
   CHECK(t.stats.nodesVisited >= 1);
 }
 
@@ -582,6 +682,8 @@ TEST_CASE("T3.4 traversal statistics: a ray that must visit every node counts ev
                      "slots [leftOrFirst, leftOrFirst + count) only")) {
   Scene scene = boxesWithoutHits();
   Built b = build(scene);
+  HINT("the tree over 64 slivers must be valid and have more than a root (64 primitives exceed kMaxLeafSize): the "
+       "message above names the node and the problem; a failure here is in buildBvh");
   requireValid(b, scene.primitives.size());
   const uint32_t nodes = uint32_t(b.bvh.nodes.size()), primitives = uint32_t(scene.primitives.size());
   REQUIRE(nodes > 1);
@@ -594,13 +696,25 @@ TEST_CASE("T3.4 traversal statistics: a ray that must visit every node counts ev
     INFO("nodes " << nodes << ", primitives " << primitives << "; counted: nodes visited " << stats.nodesVisited
                   << ", box tests " << stats.boxTests << ", primitive tests " << stats.primitiveTests
                   << " (the judge served " << t.tested.size() << ")");
+    HINT("the ray down the z axis enters every box but meets no sliver, so the traversal must find nothing: "
+         "reporting a hit (or blocked) that no primitive test returned fails here");
     CHECK_FALSE(t.found);
+    HINT("the ray enters every leaf box, so every primitive must be tested exactly once: fewer means a child the ray "
+         "enters was skipped; more means slots outside [leftOrFirst, leftOrFirst + count) or a leaf tested twice");
     CHECK(t.tested.size() == primitives);
+    HINT("stats->primitiveTests must equal the primitive tests the judge served: one per geometry.intersect call, "
+         "in both traversals");
     CHECK(stats.primitiveTests == t.tested.size());
+    HINT("the ray visits every node, so stats->nodesVisited must equal the number of nodes: count each node once "
+         "when it is processed, root and leaves included, in both traversals (not once per box test)");
     CHECK(stats.nodesVisited == nodes);
     // Every box is tested at least once; a traversal that tests each child
     // box again when it pops it tests at most 2 n - 1.
+    HINT("every one of the n boxes is tested at least once, so stats->boxTests must be at least n: count one per "
+         "intersectBox call, the root's box included, in both traversals");
     CHECK(stats.boxTests >= nodes);
+    HINT("stats->boxTests may be at most 2 n - 1 (each child box tested once more when popped): more means boxes "
+         "tested more than twice, or boxTests raised for something other than an intersectBox call");
     CHECK(stats.boxTests <= 2 * nodes - 1);
   }
 }
@@ -650,6 +764,8 @@ TEST_CASE("T3.4 traversal: a leaf's primitives are tested only when the ray ente
   }
   scene.indexPrimitives();
   Built b = build(scene);
+  HINT("the tree over 40 clusters must be valid before rays are traced (the message above names the node and the "
+       "problem): a failure here is in buildBvh");
   requireValid(b, scene.primitives.size());
   std::vector<uint32_t> leafOfSlot(scene.primitives.size());
   for (uint32_t i = 0; i < b.bvh.nodes.size(); ++i) {
@@ -661,10 +777,13 @@ TEST_CASE("T3.4 traversal: a leaf's primitives are tested only when the ray ente
   for (int i = 0; i < 400; ++i) rays.emplace_back(randomRay(random, scene, 10.0, DVec3(0.0)), kAll);
   for (bool anyHit : {false, true}) {
     const std::vector<candidate::ServedTraversal> traversals = candidate::traverseServed(b.bvh, scene, rays, anyHit);
+    HINT("the judge's own bookkeeping: one traversal answered per ray sent");
     REQUIRE(traversals.size() == rays.size());
     int wasted = 0;
     for (size_t r = 0; r < rays.size(); ++r)
       for (uint32_t slot : traversals[r].tested) {
+        HINT("every slot a traversal tests must be one of the tree's n slots: a slot of n or more comes from a leaf "
+             "loop that runs past leftOrFirst + count, or an interior node's leftOrFirst taken as a first slot");
         REQUIRE(slot < leafOfSlot.size());
         const auto& [ray, range] = rays[r];
         const Aabb& box = b.bvh.nodes[leafOfSlot[slot]].bounds;
@@ -675,6 +794,9 @@ TEST_CASE("T3.4 traversal: a leaf's primitives are tested only when the ray ente
         }
       }
     INFO(std::string(anyHit ? "any hit" : "closest hit") << ": primitives tested in leaves the ray never enters: " << wasted);
+    HINT("primitives were tested in leaves whose box the ray never enters (listed above): descend into or push a "
+         "child only when intersectBox hits it, in both traversals; pushing both children regardless, or a slab test "
+         "that hits boxes it should miss, fails here");
     CHECK(wasted == 0);
   }
 }
@@ -684,11 +806,22 @@ TEST_CASE("T3.4 any hit: an occluder just before range.max blocks, one just afte
                      "unscaled: a shadow ray's occluder 0.5 % short of the light is still inside the range")) {
   Scene scene = stackedLayers(1);  // one square at z = 0
   Built b = build(scene);
+  HINT("the tree over one square (two triangles) must be valid (the message above names the node and the "
+       "problem): a failure here is in buildBvh");
   requireValid(b, scene.primitives.size());
   const Ray ray{{0.1f, 0.2f, 2.0f}, {0.0f, 0.0f, -1.0f}};  // the square at t = 2
+  HINT("a square at t = 2 must block a shadow ray whose range ends at 2.01: use 1 / direction exactly for the slab "
+       "test and compare the box's entry with range.max unscaled; a range.max shrunk by a margin or an epsilon loses "
+       "this occluder");
   CHECK(candidate::intersectAny(b.bvh, scene, ray, {0.0f, 2.01f}));
+  HINT("a square at t = 2 must not block a shadow ray whose range ends at 1.99: pass range to geometry.intersect "
+       "unchanged (not widened) and return true only for a primitive hit, not for entering its box");
   CHECK_FALSE(candidate::intersectAny(b.bvh, scene, ray, {0.0f, 1.99f}));
+  HINT("intersectClosest must find the square at t = 2 within [0, 2.01]: a slab test that scales or shrinks "
+       "range.max, or a range narrowed before the leaf is tested, loses it");
   CHECK(candidate::intersectClosest(b.bvh, scene, ray, {0.0f, 2.01f}).has_value());
+  HINT("intersectClosest must find nothing within [0, 1.99] when the only square is at t = 2: pass range to "
+       "geometry.intersect unchanged (not widened) and report only hits a primitive test returned");
   CHECK_FALSE(candidate::intersectClosest(b.bvh, scene, ray, {0.0f, 1.99f}).has_value());
 }
 

@@ -33,6 +33,8 @@ constexpr Interval kAll{0.0f, kInfinity};
 Hit hitFromAbove(TraceContext& context, Point3 target, Vec3 from = Vec3(0.0f, 1.0f, 0.0f)) {
   Ray ray{target + from, -glm::normalize(from)};
   std::optional<Hit> hit = context.intersect(ray, kAll);
+  HINT("set-up check: the test's own ray from above must find the surface at its target point; the "
+       "judge traces this ray with its own code, not yours, so a failure here is a fault in the test");
   REQUIRE(hit.has_value());
   return *hit;
 }
@@ -64,11 +66,15 @@ TEST_CASE("T4.1 Lambertian BRDF: f = albedo / pi, so the reflected fraction is t
           grading(2, "f = albedo / pi: without the 1/pi a surface reflects pi times the light it receives")) {
   for (Color albedo : {Color(1.0f), Color(0.5f, 0.25f, 0.0f), Color(0.0f)}) {
     Color f = candidate::lambertianBrdf(albedo);
+    HINT("f must be albedo / pi in each colour channel separately: a missing 1/pi (pi times too bright), "
+         "another constant such as 1/(2 pi), or channels mixed up or taken from one component fails here");
     CHECK(f.x == doctest::Approx(albedo.x / std::numbers::pi).epsilon(1e-6));
     CHECK(f.y == doctest::Approx(albedo.y / std::numbers::pi).epsilon(1e-6));
     CHECK(f.z == doctest::Approx(albedo.z / std::numbers::pi).epsilon(1e-6));
   }
   // integral over the hemisphere of f cos = f * pi.
+  HINT("the hemisphere integral of f cos(theta) is f * pi and must equal the albedo (0.7): without the "
+       "1/pi a surface reflects pi times the light it receives");
   CHECK(double(candidate::lambertianBrdf(Color(0.7f)).x) * std::numbers::pi == doctest::Approx(0.7).epsilon(1e-6));
 }
 
@@ -151,8 +157,16 @@ TEST_CASE("T4.2 ray origins: rays leaving a surface never hit it again, at scale
   }
   INFO(all.selfHits << " of " << all.rays << " rays hit the triangle they leave; " << all.tooFar
                     << " origins moved too far");
+  HINT("set-up check: the test must have sent over 20000 rays through your offsetRayOrigin; the count "
+       "comes from the judge's random triangles, so a failure here is a fault in the test");
   CHECK(all.rays > 20000);
+  HINT("each origin must lie on the side of the surface the ray leaves to, far enough off to clear the "
+       "hit's rounding at every scale: a normal not flipped towards the direction, a fixed epsilon (too "
+       "small at 1e4..1e5), too few ulps, or ulp steps that go the wrong way on negative coordinates "
+       "fails here");
   CHECK(all.selfHits == 0);
+  HINT("an origin may move at most 1e-3 |p| + 1e-4 from the surface point: a fixed epsilon (too large "
+       "at the 1e-3 scale) or an offset of far more ulps than the recipe's int(256 n[a]) fails here");
   CHECK(all.tooFar == 0);
 }
 
@@ -164,8 +178,15 @@ TEST_CASE("T4.2 ray origins: near the origin, on a triangle 10 across, rays neve
   Random random(67);
   const Leaving l = leaveTriangles(random, 10.0, true);
   INFO(l.selfHits << " of " << l.rays << " rays hit the triangle they leave; " << l.tooFar << " origins moved too far");
+  HINT("set-up check: the test must have sent over 2000 rays through your offsetRayOrigin; the count "
+       "comes from the judge's random triangles, so a failure here is a fault in the test");
   CHECK(l.rays > 2000);
+  HINT("near the origin ulps are far smaller than the rounding error of a hit on a large triangle: "
+       "within 1/32 of the origin move by a fixed small step along the flipped normal (n / 65536), not "
+       "by ulps; a normal not flipped towards the direction also fails here");
   CHECK(l.selfHits == 0);
+  HINT("near the origin an origin may move only about 1e-4 from the surface point: a fixed step much "
+       "larger than the recipe's 1/65536 (1e-3, say) fails here");
   CHECK(l.tooFar == 0);
 }
 
@@ -181,20 +202,36 @@ TEST_CASE("T4.3 light direction: pdf = pdfArea r^2 / cos(theta'), nothing from a
   sample.radiance = Color(1.0f);
   const Point3 from(1, 0, 0.5f);
   auto d = candidate::lightDirection(from, sample);
+  HINT("a light that faces the point must give a direction: nothing here means the facing test has the "
+       "wrong sign (cos(theta') = -dot(lightNormal, wi), wi pointing from the point to the light) or "
+       "nothing is returned at all");
   REQUIRE(d.has_value());
   const DVec3 toLight = DVec3(sample.point) - DVec3(from);
   const double r = glm::length(toLight);
   const DVec3 wi = toLight / r;
   const double cosLight = -glm::dot(DVec3(sample.normal), wi);
+  HINT("distance must be r = |light point - from|, the length the shadow ray needs: r^2 or a distance "
+       "from another point fails here");
   CHECK(d->distance == doctest::Approx(r).epsilon(1e-6));
+  HINT("wi must be the unit vector from `from` towards the light point: an unnormalised vector, or the "
+       "direction from the light back to the point, fails here");
   CHECK(glm::length(DVec3(d->wi) - wi) < 1e-6);
+  HINT("pdfSolidAngle must be pdfArea * r^2 / cos(theta') with cos(theta') = -dot(lightNormal, wi), the "
+       "cosine at the light: a missing r^2 (or r instead of r^2), multiplying by the cosine, or "
+       "returning pdfArea unchanged fails here");
   CHECK(d->pdfSolidAngle == doctest::Approx(0.25 * r * r / cosLight).epsilon(1e-5));
   // The same light turned to face up: seen from behind, it gives nothing.
   sample.normal = -sample.normal;
+  HINT("a light facing away from the point (cos(theta') < 0) must give nothing: a direction here means "
+       "the back side emits (no test on cos(theta'), or a test on its absolute value)");
   CHECK_FALSE(candidate::lightDirection(from, sample).has_value());
   // Edge-on (cos = 0) and a point on the light itself: nothing, never Inf.
   sample.normal = Vec3(0, 0, 1);
+  HINT("a light seen exactly edge-on (cos(theta') = 0) must give nothing, not an infinite pdf: a test "
+       "cos(theta') < 0 instead of <= 0 fails here");
   CHECK_FALSE(candidate::lightDirection(Point3(1, 2, 0), sample).has_value());
+  HINT("a point on the light point itself (r = 0) must give nothing: wi = 0 / 0 is NaN and a NaN cosine "
+       "slips through a test like cos(theta') <= 0, so reject r = 0 (or test !(cos(theta') > 0))");
   CHECK_FALSE(candidate::lightDirection(sample.point, sample).has_value());
 }
 
@@ -215,7 +252,12 @@ TEST_CASE("T4.4 direct lighting: a point light gives exactly f I cos(theta) / r^
     const double r2 = glm::dot(toLight, toLight), cosTheta = toLight.y / std::sqrt(r2);
     const double expected = 0.5 / std::numbers::pi * 3.0 * cosTheta / r2;
     INFO(m.describe(expected));
+    HINT("a point light adds exactly f * I * cos(theta) / r^2 with cos(theta) at the surface: a missing "
+         "1/pi or cosine, r instead of r^2, a pdf applied to it, or a shadow ray that blocks it (e.g. "
+         "from the raw hit point) fails here");
     CHECK(m.mean() == doctest::Approx(expected).epsilon(1e-4));
+    HINT("a point light is exact, not sampled, so every sample stream must give the same value: drawing "
+         "random numbers for it (jittering it, or choosing lights at random with a weight) fails here");
     CHECK(m.standardError() < 1e-9);  // nothing random about a point light
   }
 }
@@ -235,6 +277,9 @@ TEST_CASE("T4.4 direct lighting: a square area light gives Lambert's exact irrad
     std::vector<DVec3> polygon = {{0.2, 1.5, -0.3}, {0.2, 1.5, 0.3}, {1.2, 1.5, 0.3}, {1.2, 1.5, -0.3}};
     const double expected = 0.5 / std::numbers::pi * 4.0 * polygonIrradiance(DVec3(hit.point), DVec3(0, 1, 0), polygon);
     INFO(m.describe(expected));
+    HINT("the mean of f Le cos(theta) / pdfSolidAngle must match Lambert's exact irradiance: a missing "
+         "cos(theta) at the surface, r^2 or 1/pdf, the light's cosine multiplied instead of divided, or "
+         "shadow rays that hit the light itself move the mean off");
     CHECK(m.agrees(expected));
   }
 }
@@ -266,10 +311,15 @@ TEST_CASE("T4.4 direct lighting: analytic irradiance under a coaxial disk light,
     std::vector<DVec3> polygon;
     for (int i = 0; i < kSegments; ++i) polygon.push_back(DVec3(rig.scene().meshes[1].positions[1 + i]));
     const double polygonE = 2.0 * polygonIrradiance(DVec3(hit.point), DVec3(0, 1, 0), polygon);
+    HINT("set-up check, computed by the judge alone: the exact irradiance of the 256-gon must match the "
+         "disk formula; a failure here is a fault in the test, not in your code");
     CHECK(polygonE == doctest::Approx(diskIrradiance).epsilon(1e-3));
     const double expected = 0.5 / std::numbers::pi * polygonE;
     CAPTURE(h);
     INFO(m.describe(expected));
+    HINT("under a coaxial disk the mean must give E = pi L R^2 / (R^2 + h^2) at h = 0.5 and 2: both "
+         "cosines matter, the one at the surface multiplies and the one at the light divides (pdfArea * "
+         "r^2 / cos(theta')); dropping either, or the r^2, fails here");
     CHECK(m.agrees(expected));
   }
 }
@@ -286,6 +336,9 @@ TEST_CASE("T4.4 direct lighting: lights seen from behind and surfaces facing awa
   Hit hit = hitFromAbove(context, Point3(0.1f, 0, 0.2f));
   MeanEstimate m = estimate(context, hit, Vec3(0, 1, 0), 2000);
   INFO(m.describe(0.0));
+  HINT("a light facing away from the floor and a point light below its horizon must add exactly 0: a "
+       "light that emits from its back (no cos(theta') <= 0 test), or a missing skip of cos(theta) <= 0 "
+       "at the surface (a negative or absolute cosine), fails here");
   CHECK(m.allExactly(0.0));
   // Control: the same light turned to face the floor lights it.
   Scene facing = floorScene();
@@ -294,6 +347,9 @@ TEST_CASE("T4.4 direct lighting: lights seen from behind and surfaces facing awa
   Rig rig2(std::move(facing));
   TraceContext context2 = rig2.context();
   Hit hit2 = hitFromAbove(context2, Point3(0.1f, 0, 0.2f));
+  HINT("control: the same light turned to face the floor must light it; if only this fails, the "
+       "front/back test of the light has the wrong sign (cos(theta') = -dot(lightNormal, wi)) or every "
+       "shadow ray is blocked");
   CHECK(estimate(context2, hit2, Vec3(0, 1, 0), 200).mean() > 0.1);
 }
 
@@ -319,12 +375,18 @@ TEST_CASE("T4.4 direct lighting: occluders cast shadows, geometry beyond the lig
   std::vector<DVec3> polygon = {{2, 1, -0.5}, {2, 1, 0.5}, {3, 1, 0.5}, {3, 1, -0.5}};
   const double areaPart = 0.5 / std::numbers::pi * 3.0 * polygonIrradiance(DVec3(open.point), DVec3(0, 1, 0), polygon);
   INFO(lit.describe(pointPart + areaPart));
+  HINT("an open point under a point light (a ceiling 0.001 above it) and an area light must get both in "
+       "full: a shadow ray that does not stop just short of the light hits the ceiling or the light's "
+       "own quad, and an estimator error (cosines, r^2, pdf) also fails here");
   CHECK(lit.agrees(pointPart + areaPart));
   // In the occluder's shadow from the point light (not from the area light).
   Hit shadowed = hitFromAbove(context, Point3(-4.0f, 0, 0), Vec3(-0.3f, 0.4f, 0.0f));
   MeanEstimate dark = estimate(context, shadowed, Vec3(0, 1, 0), 20000);
   const double areaOnly = 0.5 / std::numbers::pi * 3.0 * polygonIrradiance(DVec3(shadowed.point), DVec3(0, 1, 0), polygon);
   INFO(dark.describe(areaOnly));
+  HINT("a point in an occluder's shadow from the point light, in view of the area light, must get the "
+       "area light only: a point light added without a shadow ray, or a shadow ray that misses the "
+       "occluder (wrong direction or too short a range), fails here");
   CHECK(dark.agrees(areaOnly));
 }
 
@@ -356,7 +418,12 @@ TEST_CASE("T4.4 direct lighting: no shadow acne on a large plane lit at grazing 
     }
   }
   INFO(dark << " of " << points << " lit points came out black (self-shadowed)");
+  HINT("set-up check: the test expects one estimate per surface point, 2000 in all; a different count "
+       "is a fault in the test, not in your code");
   CHECK(points == 2000);
+  HINT("every point on a plane lit 3 degrees above the horizon must get some light, at scales "
+       "1e-3..1e5: shadow rays from the raw hit point, from a fixed-epsilon offset or from an origin "
+       "not moved towards wi shadow themselves");
   CHECK(dark == 0);
 }
 
@@ -373,7 +440,12 @@ TEST_CASE("T4.4 direct lighting: a tiny, bright light gives the right mean and n
   std::vector<DVec3> polygon = {{-5e-5, 1, -5e-5}, {-5e-5, 1, 5e-5}, {5e-5, 1, 5e-5}, {5e-5, 1, -5e-5}};
   const double expected = 0.5 / std::numbers::pi * 1e8 * polygonIrradiance(DVec3(hit.point), DVec3(0, 1, 0), polygon);
   INFO(m.describe(expected));
+  HINT("under a light 1e-4 across (pdfArea = 1e8, Le = 1e8) the estimate must stay finite: an Inf or "
+       "NaN comes from dividing by a zero cosine or distance, or from intermediate products that "
+       "overflow a float");
   REQUIRE(std::isfinite(m.mean()));
+  HINT("a light 1e-4 across must give the exact mean within 0.1 %: a missing r^2 or cosine, not "
+       "dividing by the pdf, or a threshold that drops samples with a large pdf or radiance fails here");
   CHECK(m.mean() == doctest::Approx(expected).epsilon(1e-3));
 }
 
@@ -391,12 +463,19 @@ TEST_CASE("T4.4 direct lighting: -l averages several samples per area light (sam
   const double expected = 0.5 / std::numbers::pi * 4.0 * polygonIrradiance(DVec3(hit.point), DVec3(0, 1, 0), polygon);
   INFO("1 sample: " << m1.describe(expected));
   INFO("8 samples: " << m8.describe(expected));
+  HINT("with one sample per light the mean must match the exact irradiance: an estimator error (a "
+       "cosine, r^2 or 1/pdf) fails here");
   CHECK(m1.agrees(expected));
+  HINT("with 8 samples per light (-l 8) the mean must stay the same: a sum of the samples not divided "
+       "by context.settings.lightSamples (8 times too bright) fails here");
   CHECK(m8.agrees(expected));
   // Variance ratio 1/8 (0.125); with 20000 estimates each the measured ratio
   // is within +-6 % of it (1 sigma ~1.5 %), so [0.09, 0.17] never fails by chance.
   const double ratio = m8.variance() / m1.variance();
   CAPTURE(ratio);
+  HINT("the variance with 8 samples per light must be about 1/8 of that with 1 (8 independent samples "
+       "averaged): the same random numbers reused for all 8 give about 1, a sum not divided by 8 about "
+       "8, and dividing twice far less");
   CHECK(ratio > 0.09);
   CHECK(ratio < 0.17);
 }
@@ -414,6 +493,9 @@ TEST_CASE("T4.4 direct lighting: a uniform sky gives E = pi L, averaged over -l 
     MeanEstimate m = estimate(context, hit, Vec3(0, 1, 0), 20000, 13 + uint64_t(samples));
     CAPTURE(samples);
     INFO(m.describe(0.5 * 0.8));
+    HINT("a uniform sky of radiance 0.8 must give albedo * L = 0.4 on average with 1 and 4 samples: a sky "
+         "not sampled (context.lights.environment), its pdfSolidAngle or the sample count not divided "
+         "out, or a missing cos(theta) fails here");
     CHECK(m.agrees(0.5 * 0.8));
   }
 }
@@ -435,10 +517,17 @@ TEST_CASE("T4.4 direct lighting: exactly 0 where no light arrives — a mirror, 
   TraceContext context = rig.context(4, 2);
   Hit onMirror = hitFromAbove(context, Point3(21.0f, 0, 0), Vec3(0.2f, 1.0f, 0.0f));
   Hit shaded = hitFromAbove(context, Point3(-2.0f, 0, 2.0f), Vec3(0.0f, 0.3f, 0.0f));
+  HINT("a mirror (a delta BSDF, bsdf.isDelta()) under a point light must give exactly 0: f taken from "
+       "the albedo (albedo / pi) instead of bsdf.f(wo, wi), or a NaN from 0 * Inf, fails here");
   CHECK(estimate(context, onMirror, Vec3(0, 1, 0), 200).allExactly(0.0));
+  HINT("a point in full shadow under a black sky must give exactly 0: a shadow ray that misses the roof "
+       "(wrong direction or range), or a black environment that still adds something, fails here");
   CHECK(estimate(context, shaded, Vec3(0, 1, 0), 200).allExactly(0.0));
   // Control: out in the open the point light arrives.
   Hit open = hitFromAbove(context, Point3(0.5f, 0, 0.5f));
+  HINT("control: a point in the open under the point light must be lit; if only this fails, point "
+       "lights are not added or their shadow rays are always blocked (e.g. they hit the surface they "
+       "leave)");
   CHECK(estimate(context, open, Vec3(0, 1, 0), 20).mean() > 0.0);
 }
 
@@ -472,6 +561,9 @@ TEST_CASE("T4.4 direct lighting: radiometry at every scale — a dark surface un
     CAPTURE(albedo);
     CAPTURE(size);
     INFO(m.describe(expected));
+    HINT("albedo 1e-7 under a light of 1e7, and a whole scene shrunk to 5e-4, must give the exact answer: "
+         "a threshold on f, on a light's radiance or on the distance (skipping values below some epsilon) "
+         "fails here");
     CHECK(m.agrees(expected));
   }
   // A dim sky on a bright floor, and a bright sky on a dark floor: rho L either way.
@@ -490,6 +582,8 @@ TEST_CASE("T4.4 direct lighting: radiometry at every scale — a dark surface un
     const double expected = double(albedo) * sky;
     CAPTURE(albedo);
     INFO(m.describe(expected));
+    HINT("a dim sky over a white floor and a bright sky over a dark floor must both give albedo * L: a "
+         "threshold that drops a dim sky sample or a dark f fails here");
     CHECK(std::abs(m.mean() - expected) <= 5.0 * m.judgedStandardError() + 1e-6 * expected);
   }
 }
@@ -504,9 +598,13 @@ TEST_CASE("T4.4 direct lighting: an occluder right in front of the light still b
   Rig rig(std::move(scene));
   TraceContext context = rig.context();
   Hit below = hitFromAbove(context, Point3(0.05f, 0, -0.02f), Vec3(0.6f, 0.5f, 0.0f));
+  HINT("a shade 5 mm under the point light (0.25 % of the way) must still shadow the point below: a "
+       "shadow ray shortened by a percent or by a fixed length stops before the shade");
   CHECK(estimate(context, below, Vec3(0, 1, 0), 50).allExactly(0.0));
   // Control: beside the shade's shadow the light arrives.
   Hit beside = hitFromAbove(context, Point3(6.0f, 0, 0.0f));
+  HINT("control: beside the shade's shadow the point light must arrive; if only this fails, point "
+       "lights are not added or their shadow rays are always blocked");
   CHECK(estimate(context, beside, Vec3(0, 1, 0), 50).mean() > 0.0);
 }
 
@@ -532,10 +630,15 @@ TEST_CASE("T4.4 shadow rays: unit directions, ending just short of the light, al
       queries.emplace_back(hits.back(), Vec3(0, 1, 0), uint32_t(hits.size()), testSeed(1));
     }
     const std::vector<std::vector<calls::ShadowQuery>> rays = candidate::shadowRays(context, queries);
+    HINT("set-up check: the test expects one list of shadow rays per surface point; a different count is "
+         "a fault in the test, not in your code");
     REQUIRE(rays.size() == queries.size());
     for (size_t q = 0; q < rays.size(); ++q) {
       CAPTURE(height);
       CAPTURE(q);
+      HINT("one point light in view must give exactly one shadow ray per point, traced with "
+           "context.occluded: none means the light was skipped or tested another way (e.g. "
+           "context.intersect), more than one that it was tested twice");
       REQUIRE(rays[q].size() == 1);  // one point light, in view
       const Ray& ray = std::get<0>(rays[q][0]);  // (not a structured binding: INFO's lambda must capture it)
       const Interval& range = std::get<1>(rays[q][0]);
@@ -544,9 +647,20 @@ TEST_CASE("T4.4 shadow rays: unit directions, ending just short of the light, al
       INFO("shadow ray " << str(ray.origin) << " -> " << str(ray.direction) << " over (" << range.min << ", "
                          << range.max << "); the light at " << str(light) << ", the surface point "
                          << str(hits[q].point));
+      HINT("the shadow ray's direction must be unit length: the unnormalised vector light - origin (with a "
+           "range up to 1 - 1e-4) fails here");
       CHECK(std::abs(glm::length(direction) - 1.0) < 1e-5);
+      HINT("the direction must point from the ray's own origin at the light, normalize(light - origin): "
+           "reusing wi from the surface point fails far from the origin, where the offset origin lies up to "
+           "0.25 off the surface");
       CHECK(glm::length(glm::cross(glm::normalize(toLight), glm::normalize(direction))) < 1e-4);
+      HINT("the ray must end short of the light: a range to infinity or to the full distance, or the "
+           "distance from the surface point used for a ray that starts at the offset origin (closer to the "
+           "light), runs past it");
       CHECK(glm::dot(DVec3(light) - end, direction) >= 0.0);                           // short of the light
+      HINT("the ray must end within 0.25 % of the way from the light: a shadow ray shortened by a percent "
+           "or a fixed length, or a range other than |light - origin| (1 - 1e-4) for the ray's own origin, "
+           "fails here");
       CHECK(glm::length(DVec3(light) - end) <= 0.0025 * glm::length(DVec3(light) - DVec3(hits[q].point)));
     }
   }
@@ -583,12 +697,20 @@ TEST_CASE("T4.4 direct lighting: vertex normals — a light behind the real surf
   Rig rig(std::move(scene));
   TraceContext context = rig.context(4, 2);
   Hit hit = hitFromAbove(context, Point3(0.1f, 0, 0.2f), Vec3(0.0f, 0.2f, 0.0f));
+  HINT("set-up check, computed by the judge: the hit's shading normal must be the floor's leaning "
+       "vertex normal; a failure here is a fault in the test, not in your code");
   REQUIRE(glm::dot(hit.shadingNormal, leaning) > 0.99f);
+  HINT("lights below the face's own plane, though inside the tilted shading hemisphere, must add "
+       "exactly 0: an f computed from the albedo instead of bsdf.f(wo, wi), or bsdf.f called with wo "
+       "and wi swapped, lets them through");
   CHECK(estimate(context, hit, Vec3(0, 1, 0), 2000).allExactly(0.0));
   // Control: the point light above the plane lights the point.
   lit.pointLights[0].position.y = 0.4f;
   Rig rig2(std::move(lit));
   TraceContext context2 = rig2.context();
+  HINT("control: a point light above the face's plane must light the point; if only this fails, samples "
+       "are rejected that should count (a cosine or f test with the wrong sign) or point lights are not "
+       "added");
   CHECK(estimate(context2, hitFromAbove(context2, Point3(0.1f, 0, 0.2f)), Vec3(0, 1, 0), 20).mean() > 0.0);
 }
 
@@ -606,6 +728,9 @@ TEST_CASE("T4.4 direct lighting: a point on the light itself, or at a point ligh
     hit.point = at;
     MeanEstimate m = estimate(context, hit, Vec3(0, 1, 0), 500);
     INFO(m.describe(0.0));
+    HINT("at a point on an emitting patch seen edge-on (cos(theta') = 0) and exactly at a point light (r "
+         "= 0) the estimate must stay finite: such samples must be skipped, since dividing by a zero "
+         "cosine or distance gives Inf or NaN");
     CHECK(std::isfinite(m.mean()));
     CHECK(std::isfinite(m.variance()));
   }
@@ -613,6 +738,9 @@ TEST_CASE("T4.4 direct lighting: a point on the light itself, or at a point ligh
   Hit above = hit;
   above.point = Point3(0.0f, 1.0f, 0.0f);
   above.geometricNormal = above.shadingNormal = Vec3(0, -1, 0);
+  HINT("control: a point above the patch, which faces it, must be lit; if only this fails, the light's "
+       "front/back test or the zero-cosine skip rejects samples it should keep, or the shadow ray runs "
+       "into the patch itself");
   CHECK(estimate(context, above, Vec3(0, -1, 0), 500).mean() > 0.05);
 }
 

@@ -71,13 +71,23 @@ TEST_CASE("T5.1 diffuse sampling: directions follow their pdf (chi-square, 10^6 
     if (!(w.z >= 0.0f)) ++below;
     histogram.add(w);
   }
+  HINT("every sampled direction must lie in the upper hemisphere, z >= 0 in the local frame, and not be NaN: "
+       "a sampler that covers the whole sphere, a z with the wrong sign, or a z from sqrt of a "
+       "rounding-negative number fails here");
   CHECK(below == 0);
+  HINT("every sampled direction must be a unit vector (length within 1e-3 of 1): a disk point not lifted "
+       "onto the hemisphere with z = sqrt(1 - r^2), or an r and a z that do not belong together, fails here");
   CHECK(histogram.outside == 0);  // not unit length
   std::vector<double> expected = DirectionHistogram::expected(&candidate::diffuseDirectionPdfs, kSamples);
   double integral = 0.0;
   for (double e : expected) integral += e / kSamples;
   INFO("integral of the pdf over the sphere: " << integral);
+  HINT("the pdf must integrate to 1 over the sphere (within 1%): a pdf missing its normalisation (the 1/pi "
+       "of cos(theta)/pi, the 1/(2 pi) of the uniform pdf), or one that is not 0 below the surface, fails "
+       "here");
   CHECK(integral == doctest::Approx(1.0).epsilon(0.01));
+  HINT("the pdf of a direction below the surface (z < 0) must be exactly 0: a pdf of |cos(theta)|/pi, a "
+       "negative cos(theta)/pi, or a constant over the whole sphere fails here");
   CHECK(candidate::diffuseDirectionPdf(Vec3(0, 0.6f, -0.8f)) == 0.0f);
   // What no agreement of the sampler with its own pdf shows: f cos is
   // positive over the whole hemisphere, so its pdf must be (a sampler that
@@ -94,11 +104,19 @@ TEST_CASE("T5.1 diffuse sampling: directions follow their pdf (chi-square, 10^6 
   for (double pdf : candidate::diffuseDirectionPdfs(above)) zero += pdf > 0.0 && std::isfinite(pdf) ? 0 : 1;
   INFO(zero << " of " << above.size() << " directions above the surface (cos theta from 0.001 to 1) have a pdf "
                                          "that is not positive and finite");
+  HINT("the pdf must be positive and finite at every direction above the surface, down to cos(theta) = "
+       "0.001: a pdf cut off near the horizon fails here, even when the sampler avoids the horizon too (they "
+       "agree, but the estimate is biased)");
   CHECK(zero == 0);
   ChiSquareResult r = chiSquareOfDirections("T5.1-diffuse-directions", histogram, expected, 1e-4);
   INFO("chi-square " << r.statistic << " with " << r.degreesOfFreedom << " dof: p = " << r.pValue << " "
                      << r.failure << "\n" << r.pictures);
+  HINT("the chi-square test could not run: a sample landed in a cell where the pdf is 0 (the sampler goes "
+       "where its pdf says it never does), or the pdf is almost 0 everywhere or all in one cell");
   CHECK(r.failure.empty());
+  HINT("the histogram of sampled directions must match the counts the pdf predicts (chi-square p > 1e-4): a "
+       "pdf that describes another sampler (cos(theta)/pi with uniform directions, or the reverse), or a "
+       "wrong mapping (r = u instead of sqrt(u)), fails here");
   CHECK(r.pValue > 1e-4);
 }
 
@@ -125,10 +143,18 @@ TEST_CASE("T5.1 diffuse sampling: f cos(theta) / pdf averages to the albedo (ene
   }
   limitNoise(weight, "05-path-tracing");
   INFO(weight.describe(0.7) << "; " << missing << " of 100000 draws gave no direction");
+  HINT("at most 10 of 100000 draws may give no direction (the renderer needs z > 0 and a pdf > 0): a pdf "
+       "that is 0 or NaN where the sampler goes, or a sampler that often returns z <= 0 or NaN, fails here");
   CHECK(missing <= 10);
+  HINT("f cos(theta) / pdf must average to the albedo 0.7: a pdf that does not match the sampler's density "
+       "(e.g. cos(theta)/pi with uniform directions, or a missing 1/pi), or many draws that gave no "
+       "direction, fail here");
   CHECK(weight.agrees(0.7));
   for (Vec2 u : {Vec2(0.0f), Vec2(0.99999994f), Vec2(0.99999994f, 0.0f), Vec2(0.0f, 0.99999994f)}) {
     Vec3 w = candidate::sampleDiffuseDirection(u);
+    HINT("at the edges of the square of u (0 and 0.99999994, the largest float below 1) the direction must be "
+         "finite with z >= 0 and a finite pdf: a z from sqrt(1 - x^2 - y^2) made NaN by rounding, a mapping "
+         "that leaves the hemisphere there, or a division by a zero r or z fails");
     CHECK(finite(w));
     CHECK(w.z >= 0.0f);
     CHECK(std::isfinite(candidate::diffuseDirectionPdf(w)));
@@ -216,11 +242,17 @@ TEST_CASE("T5.2 path tracing: Russian roulette keeps the mean, energy never grow
   TraceContext context = rig.context(12, 1);
   MeanEstimate a = pathMean(context, Point3(0.0f), 30000, 31);
   INFO("depth 12: " << a.describe(expected));
+  HINT("Russian roulette, which decides most bounces here, must keep the mean at -m 12 in a bright enclosure: "
+       "too dark means survivors' throughput was not divided by q, or by more than their survival "
+       "probability; too bright, by less (or emission counted after diffuse bounces)");
   CHECK(a.agrees(expected));
   // Energy never grows: even unlimited depth stays at Le / (1 - rho) = 1.
   TraceContext deep = rig.context(1000, 1);
   MeanEstimate c = pathMean(deep, Point3(0.0f), 20000, 33);
   INFO("depth 1000: " << c.describe(1.0));
+  HINT("energy never grows: with -m 1000 the mean must stay at Le / (1 - rho) = 1; too bright means "
+       "survivors' throughput was divided by less than their survival probability (or emission counted after "
+       "diffuse bounces), too dark that it was not divided by q");
   CHECK(c.agrees(1.0));
 }
 
@@ -264,11 +296,19 @@ TEST_CASE("T5.2 path tracing: no NaN or Inf in the Cornell box, at grazing angle
     if (L.x < 0.0f || L.y < 0.0f || L.z < 0.0f) ++negative;  // radiance never is
     if (maxComponent(L) > 0.0f) ++bright;
   }
+  HINT("no path may return NaN or Inf, rays skimming the floor and ceiling included: end the path when there "
+       "is no sample or its pdf is 0, never divide by a zero cosine or pdf, and stop a path whose throughput "
+       "is 0");
   CHECK(bad == 0);
+  HINT("radiance must never be negative: a negative value comes from a signed cosine in the throughput "
+       "(dot(wi, n) < 0, e.g. taken with -wi or with a normal not on wi's side) or a negative term added to "
+       "the radiance");
   CHECK(negative == 0);
   // Not a second test, only so that code returning 0 everywhere cannot pass
   // a NaN test: any working tracer lights some of these 20,000 paths
   // (roulette from the first vertex included).
+  HINT("some of the 20,000 paths must carry light: a tracer that returns 0 everywhere (no emission at the "
+       "camera hit, no direct light added, or every path stopped at the first vertex) fails here");
   CHECK(bright > 0);
 }
 

@@ -69,10 +69,17 @@ TEST_CASE("T6.1 reflect: angle out equals angle in, same plane, unit length, ref
     Vec3 wo = randomDirection(random, i % 2 == 0);
     Vec3 wi = candidate::reflect(wo);
     INFO("wo " << str(wo) << " wi " << str(wi));
+    HINT("reflect keeps the normal component: wi.z must equal wo.z, on both sides (wo.z < 0 too); negating z, "
+         "or forcing wi above the surface with |wo.z|, fails here");
     CHECK(wi.z == doctest::Approx(wo.z).epsilon(1e-6));
+    HINT("wi must be a unit vector: reflecting about +z only changes the signs of wo.x and wo.y, it never scales wo");
     CHECK(glm::length(wi) == doctest::Approx(1.0f).epsilon(1e-6));
+    HINT("the tangent part of wi must be -(wo.x, wo.y), so that wo, wi and the normal lie in one plane and wo + "
+         "wi = 2 wo.z n: swapping x and y, negating only one of them, or returning wo unchanged fails here");
     CHECK(std::abs(glm::dot(glm::cross(wo, wi), Vec3(0, 0, 1))) < 1e-5f);  // wo, wi and n coplanar
     CHECK(glm::length(wo + wi - 2.0f * wo.z * Vec3(0, 0, 1)) < 1e-5f);
+    HINT("reflecting twice must give wo back: reflect must be the same formula, wi = (-wo.x, -wo.y, wo.z), "
+         "for every wo on either side; a rule that differs between wo.z > 0 and wo.z < 0 fails here");
     CHECK(near(candidate::reflect(wi), wo, 1e-6f));
   }
 }
@@ -89,16 +96,32 @@ TEST_CASE("T6.2 refract: Snell's law in both directions, and reversible" *
       if (!entering && sinTheta(wo) * ior >= 1.0) continue;  // TIR: its own test
       CAPTURE(ior);
       INFO("wo " << str(wo));
+      HINT("refract must return a ray whenever there is no total internal reflection: "
+           "always when entering (wo.z > 0, eta = 1/ior), and when leaving (eta = ior) while eta^2 (1 - cos^2) < 1; "
+           "returning nothing here means a wrong eta or TIR test");
       REQUIRE(wi.has_value());
       const double nO = entering ? 1.0 : ior, nT = entering ? ior : 1.0;
+      HINT("Snell's law n_o sin_o = n_t sin_t must hold: sin_t = eta sin_i with eta = 1/ior entering (wo.z > 0) and "
+           "eta = ior leaving; an eta not flipped with the side (or inverted), "
+           "or eta where eta^2 belongs in sin_t^2, fails here");
       CHECK(nO * sinTheta(wo) == doctest::Approx(nT * sinTheta(*wi)).epsilon(1e-4));
+      HINT("wi must be a unit vector: its tangent part -eta (wo.x, wo.y) has length sin_t, "
+           "so |wi.z| must be cos_t = sqrt(1 - sin_t^2); keeping cos_i (wo.z) there, "
+           "or scaling z by eta too, fails here");
       CHECK(glm::length(*wi) == doctest::Approx(1.0f).epsilon(1e-5));
+      HINT("the refracted ray must go to the other side of the surface: wi.z = -cos_t when entering (wo.z > 0) "
+           "and +cos_t when leaving; a z with wo's sign fails here");
       CHECK(wi->z * wo.z < 0.0f);                                                // the other side
+      HINT("wo, wi and the normal must lie in one plane: the tangent part of wi must be eta times wo's, "
+           "(-eta wo.x, -eta wo.y), the same factor on x and y; swapping x and y, or different factors, fails here");
       CHECK(std::abs(glm::dot(glm::cross(wo, *wi), Vec3(0, 0, 1))) < 1e-4f);    // same plane
       // Reversible where it is well conditioned (near grazing or the critical
       // angle, cos_t = sqrt(1 - sin^2) amplifies rounding).
       if (std::abs(wo.z) < 0.05f || std::abs(wi->z) < 0.05f) continue;
       auto back = candidate::refract(*wi, ior);
+      HINT("refracting wi again must give a ray, and wo back: refract must use one rule on both sides, "
+           "eta from the side of its input (1/ior for w.z > 0, ior for w.z < 0) and tangent part -eta (w.x, w.y); "
+           "a rule that differs between entering and leaving, or a TIR test that fires too early, fails here");
       REQUIRE(back.has_value());
       CHECK(near(*back, wo, 1e-4f));
     }
@@ -116,9 +139,16 @@ TEST_CASE("T6.2 refract: total internal reflection exactly past the critical ang
       Vec3 pastCritical(std::sin(above), 0.0f, -std::cos(above));
       CAPTURE(ior);
       CAPTURE(offset);
+      HINT("leaving the glass just below the critical angle asin(1/ior) there must still be a refracted ray: "
+           "TIR only when eta^2 (1 - cos^2) >= 1 with eta = ior; a test with a margin, on the wrong eta, "
+           "or on cos where sin belongs, fails here");
       CHECK(candidate::refract(inside, ior).has_value());
+      HINT("leaving the glass past the critical angle asin(1/ior) refract must return nothing: "
+           "a missing TIR test (a NaN direction instead), or one using eta = 1/ior when leaving, fails here");
       CHECK_FALSE(candidate::refract(pastCritical, ior).has_value());
       // From outside there is never total internal reflection.
+      HINT("entering from outside (wo.z > 0, eta = 1/ior < 1) there is never total internal reflection: "
+           "returning nothing here means eta = ior on the way in, or the side decided wrongly");
       CHECK(candidate::refract(Vec3(std::sin(above), 0.0f, std::cos(above)), ior).has_value());
     }
   }
@@ -130,8 +160,12 @@ TEST_CASE("T6.2 refract: index 1 bends nothing (the ray goes straight through)" 
   for (int i = 0; i < 200; ++i) {
     Vec3 wo = randomDirection(random, i % 2 == 0);
     auto wi = candidate::refract(wo, 1.0f);
+    HINT("with ior = 1, eta = 1 and sin_t = sin_i < 1, so refract must always return a ray: "
+         "returning nothing here means a TIR test that fires before eta^2 (1 - cos^2) >= 1, or a wrong eta");
     REQUIRE(wi.has_value());
     // cos_t = sqrt(1 - sin^2) carries ~1e-7 / cos of rounding; |wo.z| >= 1e-3 here.
+    HINT("with ior = 1 the ray goes straight through: wi must be -wo, tangent part -(wo.x, wo.y) and z on the side "
+         "opposite wo's; a sign error on a component, or a tangent part scaled by anything but eta = 1, fails here");
     CHECK(near(*wi, -wo, 1e-4f));
   }
 }
@@ -140,21 +174,33 @@ TEST_CASE("T6.3 Schlick: ((ior - 1) / (ior + 1))^2 at normal incidence, rising t
           grading(2, "R0 = ((1 - ior) / (1 + ior))^2 and R = R0 + (1 - R0) (1 - cos)^5")) {
   // ior = 1 has no interface: the handout allows F = 0 there, in
   // schlickFresnel or in sampleGlass, so both answers are accepted at ior = 1.
+  HINT("at ior = 1 and cos = 1 both terms vanish (R0 = ((1 - ior)/(1 + ior))^2 = 0, (1 - cos)^5 = 0), "
+       "so F must be 0: cos^5 where (1 - cos)^5 belongs, or a wrong R0, fails here");
   CHECK(candidate::schlickFresnel(1.0f, 1.0f) == doctest::Approx(0.0).epsilon(1e-5));
   for (float c : {0.0f, 0.5f}) {
     const float r = candidate::schlickFresnel(c, 1.0f);
     CAPTURE(c);
+    HINT("at ior = 1 (R0 = 0) F must be (1 - cos)^5, or 0 where you treat index 1 as no interface: "
+         "a power other than 5, or cos where 1 - cos belongs, fails here");
     CHECK((r == doctest::Approx(std::pow(1.0 - c, 5.0)).epsilon(1e-5) || r == 0.0f));
   }
   for (float ior : {1.33f, 1.5f, 2.4f}) {
     const double r0 = std::pow((ior - 1.0) / (ior + 1.0), 2.0);
     CAPTURE(ior);
+    HINT("at normal incidence (cos = 1) F must be R0 = ((ior - 1)/(ior + 1))^2: R0 not squared, "
+         "another ratio of indices, or cos^5 where (1 - cos)^5 belongs, fails here");
     CHECK(candidate::schlickFresnel(1.0f, ior) == doctest::Approx(r0).epsilon(1e-5));
+    HINT("at grazing incidence (cos = 0) F must be 1: R0 + (1 - R0) (1 - cos)^5 needs the (1 - R0) factor; "
+         "without it, or with cos^5 where (1 - cos)^5 belongs, it fails here");
     CHECK(candidate::schlickFresnel(0.0f, ior) == doctest::Approx(1.0).epsilon(1e-5));
+    HINT("between the ends F must be R0 + (1 - R0) (1 - cos)^5 exactly: at cos = 0.5 a power other than 5, "
+         "or a different blend of R0 and 1, fails here");
     CHECK(candidate::schlickFresnel(0.5f, ior) == doctest::Approx(r0 + (1 - r0) * std::pow(0.5, 5)).epsilon(1e-5));
     float previous = 1.0f;
     for (float c = 0.0f; c <= 1.0f; c += 0.05f) {  // monotone: less reflection towards normal incidence
       const float r = candidate::schlickFresnel(c, ior);
+      HINT("F must not grow as cos grows from 0 (grazing, F = 1) to 1 (normal incidence, F = R0): "
+           "cos^5 where (1 - cos)^5 belongs makes it rise and fails here");
       CHECK(r <= previous + 1e-6f);
       previous = r;
     }
@@ -168,9 +214,16 @@ TEST_CASE("T6.4 mirror: a delta lobe — wi = reflect(wo), weight = reflectance,
   for (int i = 0; i < 100; ++i) {
     Vec3 wo = randomDirection(random, true);
     BsdfSample s = candidate::sampleMirror(wo, Color(0.9f, 0.5f, 0.25f));
+    HINT("sampleMirror must mark its sample as a delta (isDelta = true): "
+         "a mirror's lobe has no density to evaluate, only the one direction it sends light");
     CHECK(s.isDelta);
+    HINT("the mirror's wi must be (-wo.x, -wo.y, wo.z), the reflection of wo about the normal: a wi with z negated, "
+         "or with x and y not negated, fails here");
     CHECK(near(s.wi, Vec3(-wo.x, -wo.y, wo.z), 1e-6f));
+    HINT("a delta sample's pdf is the probability of choosing its lobe: a mirror has one lobe, so pdf must be 1");
     CHECK(s.pdf == doctest::Approx(1.0f));
+    HINT("the weight f |cos theta| / pdf must be the reflectance: f = reflectance / |cos theta| with pdf 1; "
+         "f = reflectance alone, without the 1 / |cos theta|, fails here");
     CHECK(near(pathWeight(s), Color(0.9f, 0.5f, 0.25f), 1e-5f));
   }
   Material mirror;
@@ -178,6 +231,9 @@ TEST_CASE("T6.4 mirror: a delta lobe — wi = reflect(wo), weight = reflectance,
   Hit hit;
   const BsdfLobes noTaskCode;  // a delta lobe's f and pdf call no task function
   const Bsdf bsdf(mirror, hit, Vec3(0, 0, 1), noTaskCode);
+  HINT("a mirror's Bsdf must report isDelta() and give f() = 0 and pdf() = 0 (framework code, "
+       "from the material type, calling no task function): "
+       "a failure here points to a changed framework/core/bsdf.cpp, not to sampleMirror");
   CHECK(bsdf.isDelta());
   CHECK(bsdf.f(Vec3(0, 0, 1), glm::normalize(Vec3(0.3f, 0, 1))) == Color(0.0f));
   CHECK(bsdf.pdf(Vec3(0, 0, 1), glm::normalize(Vec3(0.3f, 0, 1))) == 0.0f);
@@ -224,12 +280,19 @@ TEST_CASE("T6.5 glass: reflection is chosen with the Fresnel probability (chi-sq
     double reflections = 0.0;
     for (int i = 0; i < kSamples; ++i) {
       const BsdfSample& s = samples[size_t(i)];
+      HINT("every glass sample, reflected and refracted alike, must set isDelta = true: "
+           "both of glass's lobes are deltas; "
+           "setting it on one branch only (e.g. not on total internal reflection) fails here");
       REQUIRE(s.isDelta);
       const bool reflected = s.wi.z * wo.z > 0.0f;
       reflections += reflected;
       if (i < 2000) {
         const double nO = entering ? 1.0 : ior, nT = entering ? ior : 1.0;
         const double expectedWeight = reflected ? 0.9 : 0.8 * (nO * nO) / (nT * nT);
+        HINT("each sample's weight f |cos| / pdf must be the reflectance when it reflects, "
+             "the transmittance times (n_o/n_t)^2 when it refracts (n_o on wo's side): "
+             "pdf = the choice's probability, f = weight x pdf / |cos|; a weight of F or 1 - F, a missing 1/|cos|, "
+             "or a missing or inverted (n_o/n_t)^2 fails here");
         CHECK(pathWeight(s).y == doctest::Approx(expectedWeight).epsilon(1e-4));
       }
     }
@@ -242,6 +305,9 @@ TEST_CASE("T6.5 glass: reflection is chosen with the Fresnel probability (chi-sq
     };
     INFO("entering " << entering << ", ior " << ior << ", cos outside " << cosOutside << ": "
                      << reflections / kSamples << " reflected; Schlick F = " << schlick << ", exact F = " << exact);
+    HINT("the fraction of samples that reflect must be F, Schlick's with the outside (index 1) cosine or exact "
+         "Fresnel: Schlick with the inside or a negative cosine when leaving, "
+         "or the two choices swapped (reflecting with probability 1 - F), fails here");
     CHECK((matches(schlick) || matches(exact)));
   }
   // Past the critical angle from inside, even by 0.1 %: always reflect, with
@@ -255,7 +321,13 @@ TEST_CASE("T6.5 glass: reflection is chosen with the Fresnel probability (chi-sq
     for (float u : {0.0f, 0.5f, 0.999f}) {
       CAPTURE(past);
       BsdfSample s = candidate::sampleGlass(tir, Color(0.9f), Color(0.8f), 1.5f, u);
+      HINT("past the critical angle from inside (refract gives no ray) glass must reflect whatever u is: "
+           "wi on wo's side (wi.z < 0); tossing the Fresnel coin there anyway, "
+           "or refracting into a NaN direction, fails here");
       CHECK(s.wi.z < 0.0f);
+      HINT("on total internal reflection all light reflects with no choice made: "
+           "pdf must be 1 and the weight f |cos| / pdf the reflectance (f = reflectance / |cos|); a pdf of F, "
+           "or f carrying F, fails here");
       CHECK(s.pdf == doctest::Approx(1.0f));
       CHECK(pathWeight(s).y == doctest::Approx(0.9f));
     }
@@ -269,6 +341,9 @@ TEST_CASE("T6.5 glass: reflection is chosen with the Fresnel probability (chi-sq
                                             [](const BsdfSample& s) { return s.wi.z > 0.0f; }));
   INFO("just inside the escape cone (sin = 0.999 of the critical angle's): " << refractions
                                                                                << " of 4096 u refract");
+  HINT("just inside the escape cone, where refract still gives a ray, "
+       "some u must refract (1 - F is about 20 % there): an F of 1 or more (Schlick fed wo.z, negative inside, "
+       "when leaving), or a TIR test that fires early, fails here");
   CHECK(refractions > 0);
 }
 
@@ -281,6 +356,9 @@ TEST_CASE("T6.5 furnace: a perfect mirror and lossless glass vanish in a uniform
   mirror.albedo = Color(1.0f);
   MeanEstimate m = furnace(mirror, 1.0f, 20000);
   INFO("mirror: " << m.describe(1.0));
+  HINT("a white mirror under a white sky must give every path exactly 1: its weight f |cos| / pdf must be exactly "
+       "the reflectance (f = reflectance / |cos|, pdf 1); a missing 1 / |cos| or a pdf other than 1 "
+       "loses or adds light here");
   CHECK(m.agrees(1.0));
   for (float ior : {1.5f, 1.0f}) {
     Material glass;
@@ -291,6 +369,9 @@ TEST_CASE("T6.5 furnace: a perfect mirror and lossless glass vanish in a uniform
     MeanEstimate g = furnace(glass, 1.0f, 40000);
     CAPTURE(ior);
     INFO("glass: " << g.describe(1.0));
+    HINT("lossless glass (R = T = 1) under a white sky must give 1 on average: "
+         "each choice weighs 1 apart from (n_o/n_t)^2, which must follow wo's side so entering and leaving cancel; "
+         "a weight F or 1 - F, an eta or index ratio not flipped when leaving, or light lost on TIR fails here");
     CHECK(g.agrees(1.0));
   }
 }

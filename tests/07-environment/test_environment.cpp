@@ -111,8 +111,12 @@ TEST_CASE("T7.1 equirect: directions and (u, v) are inverse, y is up, v = 0 at t
           grading(2, "theta = acos(y), phi = atan2(z, x) in [0, 2 pi), u = phi / 2pi, v = theta / pi; and back "
                      "(sin theta cos phi, cos theta, sin theta sin phi); phi + 2 pi can round to exactly 2 pi, so "
                      "keep u below 1 (clamp it just below 1, or wrap it to 0: both name the seam)")) {
+  HINT("v must be theta / pi with theta = acos(w.y): 0 straight up (+y) and 1 straight down (-y); a v "
+       "from asin (measured from the equator), from another axis, or not divided by pi fails here");
   CHECK(candidate::directionToEquirect(Vec3(0, 1, 0)).y == doctest::Approx(0.0f));
   CHECK(candidate::directionToEquirect(Vec3(0, -1, 0)).y == doctest::Approx(1.0f));
+  HINT("u must be phi / (2 pi) with phi = atan2(z, x): +x is u = 0, +z is u = 0.25 and -x is u = 0.5; "
+       "swapped atan2 arguments, a flipped sign of z, or a division by pi instead of 2 pi fails here");
   CHECK(candidate::directionToEquirect(Vec3(1, 0, 0)).x == doctest::Approx(0.0f));
   CHECK(candidate::directionToEquirect(Vec3(0, 0, 1)).x == doctest::Approx(0.25f));
   CHECK(candidate::directionToEquirect(Vec3(-1, 0, 0)).x == doctest::Approx(0.5f));
@@ -120,12 +124,21 @@ TEST_CASE("T7.1 equirect: directions and (u, v) are inverse, y is up, v = 0 at t
   for (int i = 0; i < 2000; ++i) {
     Vec3 w(random.unitVector());
     Point2 uv = candidate::directionToEquirect(w);
+    HINT("u must lie in [0, 1): a phi from atan2 left negative (not moved into [0, 2 pi)) gives u < 0, and "
+         "a phi + 2 pi that rounds to exactly 2 pi gives u = 1 unless u is kept below 1 or wrapped to 0");
     CHECK(uv.x >= 0.0f);
     CHECK(uv.x < 1.0f);
+    HINT("v = theta / pi must lie in [0, 1] (theta = acos(w.y) is in [0, pi]): a v not divided by pi, or "
+         "from another formula, leaves that range");
     CHECK(uv.y >= 0.0f);
     CHECK(uv.y <= 1.0f);
+    HINT("equirectToDirection(directionToEquirect(w)) must give w back within 2e-4: w = (sin theta cos "
+         "phi, cos theta, sin theta sin phi) with phi = 2 pi u, theta = pi v; a back-mapping whose axes, "
+         "signs or scales differ from the forward one fails here");
     CHECK(near(candidate::equirectToDirection(uv), w, 2e-4f));
   }
+  HINT("a direction with y an ulp above 1 (as a normalisation can round) must give a finite (u, v) and "
+       "direction: clamp w.y into [-1, 1] before acos, which gives NaN outside it");
   CHECK(finite(candidate::equirectToDirection(candidate::directionToEquirect(Vec3(0, 1.0000001f, 0)))));  // |y| > 1 by rounding
   // Just below the seam phi = 2 pi - tiny rounds to 2 pi in float: u must
   // still be below 1 (a u of exactly 1 is the next wrap's first pixel) and
@@ -135,9 +148,15 @@ TEST_CASE("T7.1 equirect: directions and (u, v) are inverse, y is up, v = 0 at t
     const Vec3 w = glm::normalize(Vec3(1.0f, 0.3f, z));
     const Point2 uv = candidate::directionToEquirect(w);
     CAPTURE(uv.x);
+    HINT("just below the seam (z a hair below 0) phi + 2 pi rounds to exactly 2 pi: u must still be in [0, "
+         "1) and name the seam's meridian (u near 1 or near 0, both pass); a u of exactly 1, or a negative "
+         "phi not moved into [0, 2 pi), fails here");
     CHECK(uv.x >= 0.0f);
     CHECK(uv.x < 1.0f);
     CHECK(std::min(uv.x, 1.0f - uv.x) < 1e-3f);
+    HINT("the (u, v) found at the seam must map back to the same direction within 2e-4: with phi = 2 pi u "
+         "a u just below 1 and a u wrapped to 0 both give the seam's meridian; a back-mapping that "
+         "mishandles u at either end fails here");
     CHECK(near(candidate::equirectToDirection(uv), w, 2e-4f));
   }
 }
@@ -149,21 +168,37 @@ TEST_CASE("T7.2 lookup: bilinear between pixel centres, continuous across the u 
   for (int j = 0; j < 4; ++j)
     for (int i = 0; i < 8; ++i) map.at(i, j) = Color(float(i), float(j), float(i * 10 + j));
   // At a pixel centre: exactly that pixel.
+  HINT("at a pixel's centre ((i + 0.5) / W, (j + 0.5) / H) the lookup must give exactly that pixel: x = "
+       "u W - 0.5 and y = v H - 0.5 put centres at integers; a lookup without the - 0.5, with rows and "
+       "columns swapped, or a wrong T7.1 mapping fails here");
   CHECK(near(candidate::lookupEnvironment(map, directionAt({2.5f / 8, 1.5f / 4})), Color(2, 1, 21), 1e-4f));
   // Halfway between two centres: the average.
+  HINT("halfway between two pixel centres the lookup must give their average: blend the two nearest "
+       "centres with weight tx = x - floor(x); a nearest-pixel lookup or a wrong blend weight fails here");
   CHECK(near(candidate::lookupEnvironment(map, directionAt({3.0f / 8, 1.5f / 4})), Color(2.5f, 1, 26), 1e-3f));
   // The seam: u = 0 is halfway between the last column (7) and the first (0).
   Color seam = candidate::lookupEnvironment(map, directionAt({0.0f, 2.5f / 4}));
   INFO("at the seam " << str(seam));
+  HINT("at u = 0 the lookup must blend the last column and the first half and half: wrap column indices "
+       "(x0 = -1 is the last column); clamping columns instead, or a C++ % of a negative index left "
+       "negative, fails here");
   CHECK(near(seam, Color(3.5f, 2, 37), 1e-3f));
   // Just either side of the seam the values agree (continuity).
   Color left = candidate::lookupEnvironment(map, directionAt({0.999999f, 2.5f / 4}));
   Color right = candidate::lookupEnvironment(map, directionAt({0.000001f, 2.5f / 4}));
+  HINT("just either side of the seam (u = 0.999999 and u = 0.000001) the lookups must agree: columns "
+       "must wrap so that the last and the first are neighbours; a lookup that clamps or reads a wrong "
+       "column at the seam fails here");
   CHECK(near(left, right, 5e-3f));
   // The poles: finite, the first and last rows.
   Color top = candidate::lookupEnvironment(map, Vec3(0, 1, 0)), bottom = candidate::lookupEnvironment(map, Vec3(0, -1, 0));
+  HINT("the lookup straight up and straight down must be finite: y = v H - 0.5 is -0.5 at the zenith and "
+       "H - 0.5 at the nadir, so clamp rows into [0, H - 1]; a row read outside the map, or a NaN (u, v) "
+       "at a pole, fails here");
   CHECK(finite(top));
   CHECK(finite(bottom));
+  HINT("straight up the lookup must give the first row (v = 0 at the zenith) and straight down the last: "
+       "clamp rows into [0, H - 1] rather than wrap them; rows wrapped around, or v flipped, fail here");
   CHECK(top.y == doctest::Approx(0.0f));
   CHECK(bottom.y == doctest::Approx(3.0f));
 }
@@ -172,6 +207,7 @@ TEST_CASE("T7.2 lookup: an empty map is black, one-pixel-wide and one-pixel-high
           grading(1, "return black for a map without pixels (never divide by its size); clamp w.y into [-1, 1] "
                      "before acos (a normalised direction can have y = 1.0000001); width or height 1 needs no "
                      "special case")) {
+  HINT("a map without pixels must give black: return Color(0) before dividing by its size or reading a pixel");
   CHECK(candidate::lookupEnvironment(Image(), Vec3(0, 1, 0)) == Color(0.0f));
   Image column(1, 4), row(4, 1);
   for (int j = 0; j < 4; ++j) column.at(0, j) = Color(float(j + 1));
@@ -179,14 +215,24 @@ TEST_CASE("T7.2 lookup: an empty map is black, one-pixel-wide and one-pixel-high
   // A one-pixel-wide map is constant along u; a one-row map constant along v.
   for (double u : {0.1, 0.6, 0.95}) {
     CAPTURE(u);
+    HINT("a one-pixel-wide map must give its row's value at any u: with W = 1 both wrapped columns are "
+         "column 0; a lookup that reads a column past the single one, or special-cases width 1 wrongly, "
+         "fails here");
     CHECK(candidate::lookupEnvironment(column, directionAt(Point2(float(u), 0.625f))).y == doctest::Approx(3.0f));
+    HINT("a one-row map must give its column's value at any v: with H = 1 both clamped rows are row 0; a "
+         "lookup that reads a row past the single one, or special-cases height 1 wrongly, fails here");
     CHECK(candidate::lookupEnvironment(row, directionAt(Point2(0.625f, float(u)))).y == doctest::Approx(3.0f));
   }
   for (float y : {1.0000001f, -1.0000001f}) {
     const Point2 uv = candidate::directionToEquirect(Vec3(0.0f, y, 0.0f));
     CAPTURE(y);
+    HINT("(0, +-1.0000001, 0) is a pole: directionToEquirect must give a finite u and v exactly 0 (y > 0) "
+         "or 1 (y < 0); clamp w.y into [-1, 1] before acos (outside it acos gives NaN), and do not divide "
+         "by sin(theta), which is 0 there");
     CHECK(std::isfinite(uv.x));
     CHECK(uv.y == (y > 0 ? 0.0f : 1.0f));
+    HINT("the lookup along (0, +-1.0000001, 0) must be finite: clamp w.y into [-1, 1] before acos, or a "
+         "NaN (u, v) reaches the pixel indices");
     CHECK(finite(candidate::lookupEnvironment(column, Vec3(0.0f, y, 0.0f))));
   }
 }
@@ -196,11 +242,16 @@ TEST_CASE("T7.3 uniform sphere: directions cover the sphere evenly (chi-square, 
   constexpr int kSamples = 1000000;
   DirectionHistogram histogram;
   for (const Vec3& w : candidate::sampleUniformSphere(uniformPoints(kSamples, 72))) histogram.add(w);
+  HINT("every direction from sampleUniformSphere must be a unit vector: r = sqrt(1 - z^2) with the same "
+       "z; an r not computed from z, or a NaN from the sqrt of a value rounded below 0, fails here");
   CHECK(histogram.outside == 0);
   auto pdf = [](const std::vector<Vec3>& ws) { return std::vector<double>(ws.size(), 1.0 / (4.0 * std::numbers::pi)); };
   ChiSquareResult r = chiSquareOfDirections("T7.3-uniform-sphere", histogram, DirectionHistogram::expected(pdf, kSamples), 1e-4);
   INFO("chi-square " << r.statistic << ", dof " << r.degreesOfFreedom << ", p = " << r.pValue << " " << r.failure
                      << "\n" << r.pictures);
+  HINT("the directions must cover the sphere evenly (chi-square against 1 / (4 pi)): z = 1 - 2 u.x "
+       "uniform in [-1, 1] and phi = 2 pi u.y; a theta drawn uniformly (clumps at the poles), a z over "
+       "only part of [-1, 1], or phi over only part of [0, 2 pi) fails here");
   CHECK(r.failure.empty());
   CHECK(r.pValue > 1e-4);
 }
@@ -212,8 +263,13 @@ TEST_CASE("T7.4 distribution: CDFs from 0 to 1 over every lit pixel; the pdf int
   Image map(32, 16);
   for (Color& c : map.pixels) c = Color(float(random.uniform(0, 2)), float(random.uniform(0, 1)), float(random.uniform(0, 3)));
   EnvironmentDistribution d = candidate::buildEnvironmentDistribution(map);
+  HINT("marginalCdf must have H + 1 entries and conditionalCdf H (W + 1), one CDF of W + 1 entries per "
+       "row: CDFs of W or H entries (no leading 0) fail here");
   REQUIRE(d.marginalCdf.size() == 17);
   REQUIRE(d.conditionalCdf.size() == 16 * 33);
+  HINT("the marginal CDF must start at exactly 0 and end at 1: marginalCdf[j] is the sum of the weights "
+       "of rows 0..j-1 over the total; a CDF without its leading 0, or not divided by the total, fails "
+       "here");
   CHECK(d.marginalCdf.front() == 0.0f);
   CHECK(d.marginalCdf.back() == doctest::Approx(1.0f));
   // Any weights give an unbiased estimator as long as the pdf is the one the
@@ -222,15 +278,26 @@ TEST_CASE("T7.4 distribution: CDFs from 0 to 1 over every lit pixel; the pdf int
   // pixel with light some probability, and the pdf must integrate to 1.
   for (int j = 0; j < 16; ++j) {
     CAPTURE(j);
+    HINT("every row with light must get some probability (marginalCdf rising at every row): a row's weight "
+         "is the sum of its pixels' weights; a lit row given weight 0 (sin(theta) taken at a pole row's "
+         "edge, where it is 0, or a row skipped) fails here");
     CHECK(d.marginalCdf[size_t(j) + 1] > d.marginalCdf[size_t(j)]);
     const float* row = &d.conditionalCdf[size_t(j) * 33];
+    HINT("each row's conditional CDF must start at exactly 0 and end at 1: entry i is the sum of the row's "
+         "pixels 0..i-1 over the row's own sum; a CDF divided by the total instead of the row's sum, "
+         "without its leading 0, or rows stored at a stride other than W + 1 fail here");
     CHECK(row[0] == 0.0f);
     CHECK(row[32] == doctest::Approx(1.0f));
+    HINT("every pixel with light must get some probability within its row (the row's CDF rising at every "
+         "pixel): a pixel left out of the running sum, or an entry repeated by an off-by-one, fails here");
     for (int i = 0; i < 32; ++i) CHECK(row[i + 1] > row[i]);
   }
   for (const Image& m : {map, constantMap(100, 100), constantMap(3, 2)}) {
     const double integral = pdfIntegral(candidate::buildEnvironmentDistribution(m));
     CAPTURE(m.width);
+    HINT("environmentPdf integrated over the sphere must be 1 (for this random map, a constant 100x100 and "
+         "a constant 3x2): pdf = P(row) P(column | row) W H / (2 pi^2 sin(theta)); a pdf without the W H "
+         "or the 2 pi^2 sin(theta), or read from the wrong pixel, fails here");
     CHECK(integral == doctest::Approx(1.0).epsilon(2e-3));
   }
 }
@@ -247,6 +314,9 @@ TEST_CASE("T7.4 distribution: degenerate maps — one column, one row, one pixel
     CAPTURE(m.width);
     CAPTURE(m.height);
     const EnvironmentDistribution d = candidate::buildEnvironmentDistribution(m);
+    HINT("environmentPdf must integrate to 1 for a one-column, one-row or one-pixel map and a map of "
+         "radiance 1e-9: only the ratios of the weights matter; a total weight compared with an epsilon "
+         "instead of 0, or a special case for width or height 1 that breaks the CDFs, fails here");
     CHECK(pdfIntegral(d) == doctest::Approx(1.0).epsilon(2e-3));
     int missing = 0;
     const std::vector<Vec2> us = uniformPoints(2000, 74);
@@ -259,6 +329,9 @@ TEST_CASE("T7.4 distribution: degenerate maps — one column, one row, one pixel
       }
       directions.push_back(sample->direction);
     }
+    HINT("every sample must return a direction on these maps (every pixel has light): nothing is only for "
+         "a total weight of 0 or a pole; a threshold on the total weight (the 1e-9 map), or a CDF search "
+         "that fails on a one-interval CDF, fails here");
     CHECK(missing == 0);
     const std::vector<float> pdfs = candidate::environmentPdf(d, directions);
     int disagree = 0;
@@ -270,6 +343,9 @@ TEST_CASE("T7.4 distribution: degenerate maps — one column, one row, one pixel
     }
     // A sample on a pixel's edge can round into its neighbour, and sin(theta)
     // near a pole is recomputed from a rounded v: a few may differ.
+    HINT("each sample's pdfSolidAngle must be above 0 and equal environmentPdf of its direction within 1%: "
+         "both are P(row) P(column | row) W H / (2 pi^2 sin(theta)) of the same pixel; a sampler and pdf "
+         "that differ by a factor or pick different pixels fail here");
     CHECK(disagree <= 20);
     // Every pixel here has light, so every pixel's centre has a pdf above 0.
     std::vector<Vec3> centres;
@@ -278,6 +354,9 @@ TEST_CASE("T7.4 distribution: degenerate maps — one column, one row, one pixel
         centres.push_back(directionAt(Point2((float(i) + 0.5f) / float(m.width), (float(j) + 0.5f) / float(m.height))));
     int dark = 0;
     for (float pdf : candidate::environmentPdf(d, centres)) dark += !(pdf > 0.0f);
+    HINT("environmentPdf at every pixel's centre must be above 0 (every pixel here has light): a pdf that "
+         "reads the wrong pixel or row (an index off by one, or out of range on a one-pixel-wide or "
+         "one-row map), or returns 0 under a weight threshold, fails here");
     CHECK(dark == 0);
   }
 }
@@ -300,10 +379,19 @@ TEST_CASE("T7.5 importance sampling: samples follow the pdf on Mitsuba's maps (o
     CAPTURE(m.height);
     INFO(offDensity << " of the samples have a pdf that is not the density the CDFs define: p(row) p(column | row) "
                     "W H / (2 pi^2 sin theta)");
+    HINT("each sample's pdfSolidAngle must be the density its CDFs define at its direction, P(row) "
+         "P(column | row) W H / (2 pi^2 sin(theta)) at the sample's own theta; a pdf without the W H, one "
+         "with sin(theta) at the row's centre, or one for a pixel other than the one sampled fails here");
     CHECK(offDensity <= 500000 / 1000);
     INFO("chi-square " << r.statistic << ", dof " << r.degreesOfFreedom << ", p = " << r.pValue << " " << r.failure
                        << "\n" << r.pictures);
+    HINT("sampleEnvironment must return a direction for almost every u (fewer than 10 in 500000 may give "
+         "nothing): on a lit map only a pole gives nothing; a search that can land on an interval of zero "
+         "width and then gives up fails here");
     CHECK(failed < 10);
+    HINT("the samples must follow environmentPdf (chi-square over the sphere): the row by the marginal "
+         "CDF, the column by that row's CDF, a uniform point inside the pixel; samples off by a pixel, "
+         "landing where environmentPdf is 0, or a pdf without sin(theta) (poles over-sampled) fail here");
     CHECK(r.failure.empty());
     CHECK(r.pValue > 1e-4);
   }
@@ -325,6 +413,9 @@ TEST_CASE("T7.5 importance sampling: a single hot pixel — every sample lands i
   const std::vector<std::optional<EnvironmentSample>> samples = candidate::sampleEnvironment(d, uniformPoints(20000, 75));
   std::vector<Vec3> directions;
   for (const auto& s : samples) {
+    HINT("every sample on a map with one lit pixel must return a direction: nothing is only for a black "
+         "map or a pole; a CDF search that lands on a zero-width interval (a dark row or column) and gives "
+         "up fails here");
     REQUIRE(s.has_value());
     directions.push_back(s->direction);
   }
@@ -346,13 +437,26 @@ TEST_CASE("T7.5 importance sampling: a single hot pixel — every sample lands i
   // weight L / pdf = L * 2 pi^2 sin(theta) / p(u, v) spans the same ratio.
   const double spread = std::sin(theta1) / std::sin(theta0);
   INFO("L / pdf in [" << lo << ", " << hi << "], exact total " << 100.0 * pixelSolidAngle);
+  HINT("every sample must land inside the one lit pixel: the row by the marginal CDF, the column by that "
+       "row's CDF, then a point inside that pixel; a search off by one row or column, or a point not "
+       "kept inside the pixel, fails here");
   CHECK(outside == 0);
+  HINT("L / pdf may spread only by the ratio of sin(theta) across the pixel: the pdf is p(u, v), "
+       "constant over the pixel, over 2 pi^2 sin(theta) at the sample's own theta; a p(u, v) that "
+       "changes inside the pixel, or sin(theta) of a theta outside it, fails here");
   CHECK(hi / lo <= spread * 1.001);
   // The mean of L / pdf estimates the pixel's total: exact here up to 5 sigma.
   limitNoise(weight, "07-environment");
   INFO(weight.describe(100.0 * pixelSolidAngle));
+  HINT("the mean of L / pdf must be the pixel's radiance times its solid angle: pdf = P(row) P(column | "
+       "row) W H / (2 pi^2 sin(theta)); a missing W H, a missing or extra sin(theta), or a wrong "
+       "constant in 2 pi^2 fails here");
   CHECK(weight.agrees(100.0 * pixelSolidAngle));
   // The sample's pdf is the one environmentPdf gives for its direction.
+  HINT("each sample's pdfSolidAngle must equal environmentPdf of its direction within 1e-3: both must be "
+       "P(row) P(column | row) W H / (2 pi^2 sin(theta)) of the same pixel at the same theta; a "
+       "sin(theta) of the row's centre in one and of the sample in the other, or a different factor, "
+       "fails here");
   CHECK(inconsistent == 0);
 }
 
@@ -360,8 +464,13 @@ TEST_CASE("T7.5 importance sampling: an all-black map gives no samples and no Na
           grading(2, "a zero total weight means nothing to sample: return nothing, never divide by 0; a sample "
                      "exactly at a pole (sin(theta) = 0) returns nothing too")) {
   EnvironmentDistribution black = candidate::buildEnvironmentDistribution(Image(16, 8));
+  HINT("an all-black map must have totalWeight exactly 0, the sum of all pixels' weights: a small "
+       "epsilon added to every weight (to avoid empty rows) fails here");
   CHECK(black.totalWeight == 0.0);
+  HINT("sampleEnvironment on a black map must return nothing: test totalWeight > 0 first, and never "
+       "divide by it or choose an interval of zero width");
   for (const auto& s : candidate::sampleEnvironment(black, uniformPoints(100, 76))) CHECK_FALSE(s.has_value());
+  HINT("environmentPdf on a black map must be 0 (not NaN): return 0 when totalWeight is 0, before any division");
   CHECK(candidate::environmentPdf(black, Vec3(0, 1, 0)) == 0.0f);
   // Light only in the pole rows: samples and pdfs stay finite.
   Image poles(16, 8);
@@ -370,14 +479,29 @@ TEST_CASE("T7.5 importance sampling: an all-black map gives no samples and no Na
   int finiteSamples = 0;
   for (const auto& s : candidate::sampleEnvironment(d, uniformPoints(20000, 77))) {
     if (!s) continue;
+    HINT("every sample on a map lit only in its pole rows must have a finite direction: a point placed "
+         "inside a chosen interval of zero width (a dark row or pixel) divides by that width of 0 and is "
+         "NaN; never choose an interval of zero width");
     REQUIRE(finite(s->direction));
+    HINT("every sample's pdf must be finite: a sample exactly at a pole (sin(theta) = 0) must give nothing "
+         "rather than a division by 0, and a NaN point from a zero-width interval fails here too");
     REQUIRE(std::isfinite(s->pdfSolidAngle));
+    HINT("every sample's pdf must be above 0: a pdf of 0 means an interval of zero width (a dark row or "
+         "pixel) was chosen; choose only intervals with cdf[i + 1] > cdf[i]");
     REQUIRE(s->pdfSolidAngle > 0.0f);
     ++finiteSamples;
   }
+  HINT("all but a few of the 20000 samples on the pole-row map must return a direction: only a u exactly "
+       "at a pole may give nothing; returning nothing for the pole rows, or when a search lands on a "
+       "zero-width interval, fails here");
   CHECK(finiteSamples > 19990);
+  HINT("environmentPdf exactly at the poles (0, +-1, 0) must be finite: sin(theta) is 0 there, so return "
+       "a finite value (0) rather than divide by it");
   CHECK(std::isfinite(candidate::environmentPdf(d, Vec3(0, 1, 0))));
   CHECK(std::isfinite(candidate::environmentPdf(d, Vec3(0, -1, 0))));
+  HINT("environmentPdf must integrate to 1 for a map lit only in its pole rows: divide by 2 pi^2 "
+       "sin(theta) at the direction's own theta; a sin(theta) of the row's centre, a clamp on sin(theta) "
+       "near the poles, or a pdf read from the wrong row fails here");
   CHECK(pdfIntegral(d) == doctest::Approx(1.0).epsilon(5e-3));
 }
 

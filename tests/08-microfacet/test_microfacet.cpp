@@ -219,10 +219,14 @@ TEST_CASE("T8.1 roughness: alpha = roughness^2, kept above 0 by a small clamp" *
                      "max(alpha, 0.001) so that a roughness of 0 stays finite")) {
   for (float r : {0.05f, 0.1f, 0.3f, 0.5f, 0.8f, 1.0f}) {
     CAPTURE(r);
+    HINT("alphaFromRoughness must return roughness^2 (the perceptual roughness squared) above the clamp: "
+         "alpha = roughness, or sqrt(roughness), fails here");
     CHECK(candidate::alphaFromRoughness(r) == doctest::Approx(double(r) * r).epsilon(1e-5));
   }
   const float smallest = candidate::alphaFromRoughness(0.0f);
   INFO("alpha at roughness 0: " << smallest);
+  HINT("at roughness 0 alpha must be kept above 0 by a small clamp, at most 0.001 (max(roughness^2, 0.001)): "
+       "no clamp (alpha = 0) fails the first check, a larger floor the second");
   CHECK(smallest > 0.0f);
   CHECK(smallest <= 1e-3f);
 }
@@ -249,6 +253,8 @@ TEST_CASE("T8.1 GGX D: the formula, 0 below the surface, and the integral of D c
                    << ", expected " << expected[i]);
     }
   }
+  HINT("ggxD must match alpha^2 / (pi ((alpha^2 - 1) m.z^2 + 1)^2) at random normals and be 0 for m.z <= 0: "
+       "a missing pi, alpha where alpha^2 belongs, a missing square, or a nonzero D below the surface fails here");
   CHECK(wrong == 0);
   // The integral of D(m) cos theta_m over the hemisphere, 2 pi int D cos sin dtheta,
   // on a fine grid in theta (D is isotropic), of the candidate's D.
@@ -265,6 +271,9 @@ TEST_CASE("T8.1 GGX D: the formula, 0 below the surface, and the integral of D c
     double integral = 0.0;
     for (size_t i = 0; i < d.size(); ++i) integral += d[i] * weight[i];
     CAPTURE(a);
+    HINT("the integral of your D(m) cos theta_m over the upper hemisphere must be 1 at every alpha "
+         "(the facets cover the surface once): a missing pi, or alpha where alpha^2 belongs, "
+         "breaks the normalisation");
     CHECK(integral == doctest::Approx(1.0).epsilon(2e-3));
   }
 }
@@ -407,8 +416,14 @@ TEST_CASE("T8.4 conductor BRDF: D G2 F / (4 cos_o cos_i) at the half vector, rec
     if (wo.z > 0.0f && wi.z > 0.0f && glm::length(DVec3(f[i]) - DVec3(back[i])) > tolerance * glm::length(DVec3(f[i])) + 1e-6)
       ++unreciprocal;
   }
+  HINT("conductorBrdf must be D(h) G2(wo, wi, h) F(wo.h) / (4 wo.z wi.z) with h = normalize(wo + wi), "
+       "alpha from alphaFromRoughness, F by Schlick or exactly as exactFresnel says, and 0 when wo.z or wi.z <= 0: "
+       "G1 for G2, F of wo.z, or a missing 4 fails here");
   CHECK(wrong == 0);
   INFO(unreciprocal << " pairs with f(wo, wi) != f(wi, wo)");
+  HINT("f(wo, wi) must equal f(wi, wo): every term must treat wo and wi alike (G2 of both, "
+       "F of wo.h = wi.h, 4 wo.z wi.z); a G1 of wo alone, F of wo.z, "
+       "or a denominator with one cosine twice breaks reciprocity");
   CHECK(unreciprocal == 0);
 }
 
@@ -434,7 +449,12 @@ TEST_CASE("T8.5 normal sampling: GGX normals follow D(m) cos theta_m (chi-square
     const ChiSquareResult r = stretchedChiSquare("T8.5-ggx-normals", stretched, 0, expected, refinement.edges);
     INFO("chi-square " << r.statistic << " with " << r.degreesOfFreedom << " dof: p = " << r.pValue << " " << r.failure
                        << "\n" << r.pictures);
+    HINT("every sampled normal must lie where D(m) cos theta_m > 0, in the upper hemisphere: "
+         "a normal with m.z <= 0, or a non-finite one, lands where none is expected and fails here");
     CHECK(r.failure.empty());
+    HINT("the sampled normals must be distributed as D(m) cos theta_m: inverting its CDF gives tan^2 theta = "
+         "alpha^2 u1 / (1 - u1), phi = 2 pi u2; tan theta taken as that (no square root), "
+         "alpha where alpha^2 belongs, or a density of D without the cos fails here");
     CHECK(r.pValue > 1e-5);
   }
 }
@@ -460,6 +480,9 @@ TEST_CASE("T8.5 visible normals: the density formula, and samples that follow it
     if (!(std::abs(pdfs[i] - want) <= roundingOfD(DVec3(m), a) * want + 1e-6) && ++wrong <= 3)
       MESSAGE("D_wo(" << str(m) << ") for wo " << str(wo) << ", alpha " << a << ": " << pdfs[i] << ", expected " << want);
   }
+  HINT("visibleNormalPdf must be G1(wo, m) max(0, wo.m) D(m) / wo.z at random wo and m: "
+       "a missing max(0, wo.m) (nonzero on facets wo sees from behind), G2 or 1 for G1, "
+       "or a missing 1/wo.z fails here");
   CHECK(wrong == 0);
   // The samples, against the judge's own density.
   uint32_t stream = 0;
@@ -484,7 +507,12 @@ TEST_CASE("T8.5 visible normals: the density formula, and samples that follow it
           stretchedChiSquare("T8.5-visible-normals", stretched, 0, expected, refinement.edges);
       INFO("chi-square " << r.statistic << " with " << r.degreesOfFreedom << " dof: p = " << r.pValue << " "
                          << r.failure << "\n" << r.pictures);
+      HINT("every sampled visible normal must be one wo can see: an m with wo.m <= 0 or m.z <= 0 (or non-finite) "
+           "lands where the density is 0 and fails here, most often at grazing wo");
       CHECK(r.failure.empty());
+      HINT("the sampled normals must follow D_wo(m) = G1(wo, m) max(0, wo.m) D(m) / wo.z for this wo: "
+           "a stretch by 1/alpha where alpha belongs (or the reverse when unstretching), a wrong half-disk warp, "
+           "or a plain D cos sampler fails here, most at grazing angles");
       CHECK(r.pValue > 1e-5);
     }
   }
@@ -582,19 +610,35 @@ SamplerCheck checkSampler(const std::string& name, const DVec3& wo, const Materi
 void reportSampler(const SamplerCheck& c) {
   INFO(c.inconsistent << " samples whose f or pdf differ from f() and pdf() in their direction; " << c.invalid
                       << " invalid (below the surface, not unit, a delta, a pdf <= 0, NaN)");
+  HINT("each sample's f and pdf must be what the BRDF and the pdf function (conductorPdf or plasticPdf) give at the "
+       "wi it drew: a pdf of m without the 1/(4|wo.m|) Jacobian, (plastic) the drawn lobe's pdf instead of the "
+       "mixture's, or a wrong f fails here");
   CHECK(c.inconsistent == 0);
+  HINT("a returned sample must have wi.z > 0, a unit wi, isDelta false, a finite pdf > 0 and a finite f: "
+       "return nothing instead when the reflection goes below the surface or the pdf is 0");
   CHECK(c.invalid == 0);
   INFO(c.pdfBelow << " of 64 directions below the surface where pdf() is not 0");
+  HINT("pdf() must be 0 for wi below the surface (wi.z < 0): the sampler never draws there, "
+       "and task 9's MIS weights read pdf() at directions a light gave");
   CHECK(c.pdfBelow == 0);
   // At most 1, give or take what refining the quadrature moved it (the
   // midpoint rule's error where the pdf jumps at the horizon) and float's
   // rounding of the pdf (~1e-6, far inside 1e-3).
   INFO("pdf() integrates to " << c.pdfIntegral << " over the directions above the surface (the quadrature's own "
                               << "error " << c.pdfIntegralError << ")");
+  HINT("pdf() must integrate to at most 1 over the directions above the surface: "
+       "a pdf of m used as the pdf of wi (no 1/(4|wo.m|) Jacobian), "
+       "or mixture probabilities that sum past 1, can exceed it");
   CHECK(c.pdfIntegral <= 1.0 + 1e-3 + c.pdfIntegralError);
   INFO("chi-square " << c.chi.statistic << " with " << c.chi.degreesOfFreedom << " dof: p = " << c.chi.pValue << " "
                      << c.chi.failure << "\n" << c.chi.pictures);
+  HINT("every drawn wi must lie where pdf() > 0, and pdf() must integrate to no more than the share of draws that "
+       "return a direction: a pdf() that is 0 where the sampler draws, "
+       "or one that claims too much (leaving no room for the draws that return nothing), fails here");
   CHECK(c.chi.failure.empty());
+  HINT("the drawn directions must be distributed as pdf() says: a pdf() that is not the sampler's density "
+       "(a D cos pdf with visible-normal sampling, no 1/(4|wo.m|) Jacobian, the drawn lobe's pdf instead of the "
+       "mixture's) fails here, most at grazing angles");
   CHECK(c.chi.pValue > 1e-5);
 }
 
@@ -659,7 +703,12 @@ TEST_CASE("T8.6 conductor energy: a white furnace (F = 1) reflects what the quad
       CAPTURE(roughness);
       CAPTURE(theta);
       INFO(albedo.describe(expected));
+      HINT("a check of the test's own quadrature (the model's albedo for F = 1 is at most 1), not of your code: "
+           "a failure here is the test's, so report it");
       CHECK(expected <= 1.0);
+      HINT("the mean weight f cos theta_i / pdf for F = 1 must be the model's albedo "
+           "(G2 / G1(wo) per sample with visible normals): a pdf without the 1/(4|wo.m|) Jacobian, "
+           "G1 where G2 belongs in f, or a pdf that is not the sampler's density changes it");
       CHECK(albedo.agrees(expected));
     }
   }
@@ -697,8 +746,13 @@ TEST_CASE("T8.7 plastic BRDF: the coat's specular lobe plus the base, dimmed by 
     if (wo.z > 0.0f && wi.z > 0.0f && glm::length(DVec3(f[i]) - DVec3(back[i])) > tolerance * glm::length(DVec3(f[i])) + 1e-6)
       ++unreciprocal;
   }
+  HINT("plasticBrdf must be D G2 F_c(wo.h) / (4 cos_o cos_i) + (1 - F_c(cos_o)) (1 - F_c(cos_i)) diffuse / pi, "
+       "F_c Schlick's for F0 = ((ior - 1)/(ior + 1))^2, and 0 below the surface: the base dimmed one way only, "
+       "no 1/pi, or a wrong F0 fails here");
   CHECK(wrong == 0);
   INFO(unreciprocal << " pairs with f(wo, wi) != f(wi, wo)");
+  HINT("f(wo, wi) must equal f(wi, wo): the base must be dimmed by (1 - F_c) of both cos_o and cos_i, "
+       "and the coat use G2 and F_c(wo.h); a term of one direction only breaks reciprocity");
   CHECK(unreciprocal == 0);
 }
 
@@ -732,6 +786,9 @@ TEST_CASE("T8.7 plastic sampling: a mixture of coat and base, whose pdf is the m
       const double expected = coat + (1.0 - coatFresnel(wo.z, p.ior)) * double(p.diffuse.y) * base;
       limitNoise(check.albedo, "08-microfacet");
       INFO(check.albedo.describe(expected));
+      HINT("the mean weight f cos theta_i / pdf must be the plastic's albedo: it is when every sample carries the "
+           "true f and the mixture pdf P pdf_coat + (1 - P) pdf_base of its wi; the drawn lobe's pdf alone, "
+           "or a lobe chosen with a probability other than the P in the pdf, biases it");
       CHECK(check.albedo.agrees(expected));
     }
   }
@@ -779,6 +836,9 @@ TEST_CASE("T8 no NaN or Inf: grazing directions, wo on the horizon, and roughnes
       for (const auto& s : candidate::many<calls::SamplePlastic>(ps)) check(s);
     }
   }
+  HINT("f, pdf and samples must stay finite at grazing wo (wo.z = 0), wo + wi = 0 and roughness 0: "
+       "guard the divisions by cos theta (Lambda is infinite there, G1 = 0) and the normalisation of wo + wi, "
+       "and take alpha from alphaFromRoughness so it stays above 0");
   CHECK(bad == 0);
   // And in a plain configuration the same calls give light: finite is not enough.
   const Vec3 wo = glm::normalize(Vec3(0.5f, 0.1f, 0.8f)), mirror(-wo.x, -wo.y, wo.z);
@@ -787,7 +847,11 @@ TEST_CASE("T8 no NaN or Inf: grazing directions, wo on the horizon, and roughnes
                                                                {wo, Vec2(0.7f, 0.2f), conductor(0.5f)}}))
     drawn += s.has_value() && s->pdf > 0.0f;
   INFO(drawn << " of 2 conductor samples at 37 degrees, roughness 0.5");
+  HINT("at 37 degrees and roughness 0.5 sampleConductor must return a sample with pdf > 0 for these u: "
+       "a guard that returns nothing (or a pdf of 0) in an ordinary configuration fails here");
   CHECK(drawn == 2);
+  HINT("conductorBrdf and plasticBrdf must be positive at the mirror direction for wo at 37 degrees, roughness 0.5: "
+       "a guard that returns 0 in an ordinary configuration fails here");
   CHECK(candidate::conductorBrdf(wo, mirror, conductor(0.5f)).y > 0.0f);
   CHECK(candidate::plasticBrdf(wo, mirror, plastic(0.5f)).y > 0.0f);
 }

@@ -150,6 +150,9 @@ void checkSamplesFollowPdf(const std::string& name, const Scene& scene, const Po
   const std::vector<std::optional<LightSample>> samples = candidate::sampleOneLight(scene, from, uniforms(kSamples, seed));
   const std::string choice = lightChoiceProblem(scene, from, samples);
   INFO(name << ": " << choice);
+  HINT("light sampling must aim each wi at a light, with pdf = that light's choice probability times its own solid-angle "
+       "density, the choice probabilities summing to 1: a pdf without the choice, an area density 1/A, a sky pdf that "
+       "is not the environment's, or directions at no light fail here");
   CHECK(choice.empty());
   for (const std::optional<LightSample>& s : samples) {
     if (!s) {
@@ -173,7 +176,12 @@ void checkSamplesFollowPdf(const std::string& name, const Scene& scene, const Po
   for (double e : expected) integral += e / double(kSamples);
   INFO(name << ": " << none << " of " << kSamples << " draws gave no direction; the pdf integrates to " << integral
             << " over the sphere, the fraction of draws that gave one is " << given / kSamples);
+  HINT("every sample's wi must be a unit vector: the direction to the light point left unnormalised (toLight, not "
+       "toLight / distance) fails here");
   CHECK(notUnit == 0);
+  HINT("oneLightPdf integrated over all directions must equal the fraction of draws that gave a direction: a pdf "
+       "without the choice probability, in area measure, non-zero where no light is seen, or a sampler that drops "
+       "draws it should give fails here");
   CHECK(integral == doctest::Approx(given / kSamples).epsilon(0.02));
   // The expected counts of the directions actually given.
   for (double& e : expected) e *= given / std::max(integral * kSamples, 1.0);
@@ -200,6 +208,9 @@ void checkSamplesFollowPdf(const std::string& name, const Scene& scene, const Po
   const ChiSquareResult r = chiSquareOfDirections("T9.2-" + name, histogram, expected, 1e-4);
   INFO("chi-square " << r.statistic << " with " << r.degreesOfFreedom << " dof: p = " << r.pValue << " " << r.failure
                      << "\n" << r.pictures);
+  HINT("sampleOneLight's directions must be distributed as its own oneLightPdf says: directions drawn where "
+       "oneLightPdf is 0 (a light it does not find), or the two disagreeing on a light's share or density (the "
+       "sky sampled by its map but given another pdf) fail here");
   CHECK(r.failure.empty());
   CHECK(r.pValue > 1e-4);
 }
@@ -228,11 +239,17 @@ TEST_CASE("T9.1 heuristics: balance and power by their formulas, the two weights
       }
     }
   }
+  HINT("balanceHeuristic(a, b) must be a / (a + b) and powerHeuristic(a, b) a^2 / (a^2 + b^2) (to 1e-4 relative), so "
+       "that w(a, b) + w(b, a) = 1: the arguments swapped, the square left out, or another exponent fails here");
   CHECK(wrong == 0);
   for (float p : {1e-3f, 1.0f, 250.0f}) {
     CAPTURE(p);
+    HINT("where the other density is 0 this weight must be 1: a form that divides by the other density (inf / inf "
+         "is NaN), a guard that returns 0 when pdfOther is 0, or swapped arguments fails here");
     CHECK(candidate::balanceHeuristic(p, 0.0f) == doctest::Approx(1.0f));
     CHECK(candidate::powerHeuristic(p, 0.0f) == doctest::Approx(1.0f));
+    HINT("where this density is 0 its weight must be 0 (its strategy cannot draw that direction): a guard that "
+         "returns 1 or 1/2 when a density is 0, or swapped arguments, fails here");
     CHECK(candidate::balanceHeuristic(0.0f, p) == 0.0f);
     CHECK(candidate::powerHeuristic(0.0f, p) == 0.0f);
   }
@@ -332,6 +349,8 @@ TEST_CASE("T9.2 one light: each sample's direction, distance and radiance are th
     ++next;
   }
   INFO(pdfsDiffer << " of " << directions.size() << " samples have a pdf oneLightPdf does not give" << examples.str());
+  HINT("each sample's pdf must be what oneLightPdf gives for its wi: the two using different choice probabilities, "
+       "or one of them leaving the choice out or using an area density, fail here");
   CHECK(pdfsDiffer <= int(directions.size()) / 100);
   for (const std::optional<LightSample>& s : samples) {
     if (!s) continue;
@@ -349,11 +368,18 @@ TEST_CASE("T9.2 one light: each sample's direction, distance and radiance are th
                                 << ": the ray finds a surface at " << hit->t);
     }
   }
+  HINT("more than half the draws must give a sample, as every light here faces the point: a facing test with the "
+       "wrong sign (the cosine at the light), or a sampler that returns nothing, fails here");
   CHECK(found > 1000);
+  HINT("distance must be from the point to the sampled light point along the unit wi, radiance the light's Le seen "
+       "from the point, and pdf positive: a squared distance, a distance along an unnormalised direction, or a "
+       "radiance that is not Le fails here");
   CHECK(wrong == 0);
   // 1 % may find nothing: a ray aimed at the ball's outline can graze past
   // it in float (seed 24 of 1-100 has one such sample).
   INFO(missed << " of " << found << " samples' rays find nothing");
+  HINT("wi must point from the shading point towards the sampled light point: a reversed wi (from the light to the "
+       "point), or one aimed where no light is, finds nothing and fails here");
   CHECK(missed <= found / 100);
 }
 
@@ -375,14 +401,22 @@ TEST_CASE("T9.2 one light: its density is 0 towards a light's back, a surface th
   const std::vector<float> pdfs = candidate::oneLightPdf(scene, queries);
   for (size_t i = 0; i < pdfs.size(); ++i) {
     CAPTURE(i);
+    HINT("oneLightPdf must be 0 where light sampling never goes: towards a one-sided light's back, a surface that "
+         "does not emit, or the empty sky of a scene without one: a pdf that ignores which way the light faces, or "
+         "is non-zero for any hit or a miss, fails here");
     CHECK(pdfs[i] == 0.0f);
   }
   // And positive where the lamp faces the point.
   const std::vector<float> front = candidate::oneLightPdf(scene, {{Point3(0.0f, 2.0f, 0.0f), Vec3(0, -1, 0)}});
+  HINT("oneLightPdf must be positive towards a lamp's front: a facing test with the wrong sign, or a pdf that is "
+       "always 0, fails here");
   CHECK(front[0] > 0.0f);
   // A scene with no light at all.
   Scene dark;
   addQuad(dark, {3.0f, -1.0f, -1.0f}, {0, 2, 0}, {0, 0, 2}, addMaterial(dark, Color(0.7f)));
+  HINT("with no light at all oneLightPdf must be 0, for a hit on a wall and for a miss: a choice probability 1 / 0 "
+       "(inf, and inf * 0 is NaN) used without checking that there are lights, or a pdf for a surface that does not "
+       "emit, fails here");
   CHECK(candidate::oneLightPdf(dark, {{Point3(0.0f), Vec3(1, 0, 0)}, {Point3(0.0f), Vec3(-1, 0, 0)}}) ==
         std::vector<float>{0.0f, 0.0f});
   // A black sky map is a light of no power: its sampler draws nothing, and
@@ -394,6 +428,9 @@ TEST_CASE("T9.2 one light: its density is 0 towards a light's back, a surface th
   for (const std::optional<LightSample>& sample : candidate::sampleOneLight(black, Point3(0.0f), uniforms(200, 97))) {
     if (sample && sample->pdf > 0.0f && maxComponent(sample->radiance) > 0.0f) ++carrying;
   }
+  HINT("a black sky map, the only light, carries no light: no sample may have both a positive pdf and a positive "
+       "radiance; a radiance that is not the map's along wi, or a sample made up when the sky's sampler gives none, "
+       "fails here");
   CHECK(carrying == 0);
 }
 
@@ -488,38 +525,57 @@ TEST_CASE("T9.3 path tracer: light alone, BSDF alone and MIS each give Lambert's
   }
 }
 
-// Every kind of light at once (two area lights, a sky, a point light) over a
-// floor lit on either side of its winding: what the suite tests apart, put
-// together. The sky is seen wherever the lights (opaque, emitting downwards)
-// do not hide it: E = Ls (pi - P_big - P_small) + 2 P_big + 30 P_small +
-// I cos / d^2, with P a square's projected solid angle (Lambert's formula);
+// Every kind of light at once (two area lights, a sky, a point light) over
+// every kind of floor (winding up, winding down so that it is lit on its
+// back, and smooth vertex normals tilted from the geometric one): what the
+// suite tests apart, put together. The sky is seen wherever the lights
+// (opaque, emitting downwards) do not hide it:
+//   E = Ls (H - P_big - P_small) + 2 P_big + 30 P_small + I cos / d^2,
+// with P a square's projected solid angle about the shading normal
+// (Lambert's formula; both squares lie wholly above the tilted plane too)
+// and H the projected solid angle of the sky the BSDF sees. f is zero below
+// the shading and below the geometric plane, so with the shading normal
+// tilted by a from the geometric one H = pi (1 + cos a) / 2 (pi when a = 0).
 // BSDF sampling alone has no point light (it takes no light sample).
-TEST_CASE("T9.3 path tracer: area lights, a sky and a point light at once, on a floor of either winding, by every "
-          "estimator" *
+TEST_CASE("T9.3 path tracer: area lights, a sky and a point light at once, on a floor of either winding and one with "
+          "tilted vertex normals, by every estimator" *
           grading(2, "every light shares the choice: with area lights and a sky, each has probability 1 / (areas + "
                      "1) in sampleOneLight and in oneLightPdf, also for a BSDF ray that escapes to the sky; a "
                      "surface is lit on whichever side of its winding the ray arrived (orient its normal towards wo)")) {
   constexpr float kSky = 0.25f, kIntensity = 1.5f;
+  constexpr double kTilt = 35.0 * std::numbers::pi / 180.0;  // the smooth floor's shading normal, towards -x
   const Point3 lamp(-1.0f, 1.0f, 1.2f);
+  enum class Floor { WindingUp, WindingDown, TiltedNormals };
   std::vector<std::pair<MisEstimator, bool>> agreed;
-  std::vector<MeanEstimate> upright;  // each check's estimate on the floor facing up
-  size_t check = 0;
-  for (bool flipped : {false, true}) {
+  std::vector<std::pair<MeanEstimate, bool>> upright;  // each check's estimate on the floor facing up, and its verdict
+  bool onlyOneFloorWrong = false;
+  for (Floor kind : {Floor::WindingUp, Floor::WindingDown, Floor::TiltedNormals}) {
     Scene scene = threeLights(false);
     scene.environment = Environment{};
     scene.environment->color = Color(kSky);
     scene.pointLights.push_back(PointLight{lamp, Color(kIntensity)});
     const uint32_t floor = addMaterial(scene, Color(0.5f));
-    if (flipped) addQuad(scene, {-10, 0, 10}, {0, 0, -20}, {20, 0, 0}, floor);  // u x v = -y: its back faces up
+    if (kind == Floor::WindingDown) addQuad(scene, {-10, 0, 10}, {0, 0, -20}, {20, 0, 0}, floor);  // u x v = -y
     else addQuad(scene, {-10, 0, 10}, {20, 0, 0}, {0, 0, -20}, floor);
+    const DVec3 shadingNormal = kind == Floor::TiltedNormals ? DVec3(-std::sin(kTilt), std::cos(kTilt), 0.0)
+                                                             : DVec3(0.0, 1.0, 0.0);
+    if (kind == Floor::TiltedNormals) scene.meshes.back().normals.assign(4, Vec3(shadingNormal));
+    const double skySeen = kind == Floor::TiltedNormals ? std::numbers::pi * (1.0 + std::cos(kTilt)) / 2.0
+                                                        : std::numbers::pi;
+    const char* floorName = kind == Floor::WindingUp     ? "the floor's winding faces up"
+                            : kind == Floor::WindingDown ? "the floor's winding faces down (lit on its back)"
+                                                         : "the floor's vertex normals lean 35 degrees from its "
+                                                           "geometric normal (winding up)";
     const Rig rig(scene);
     TraceContext context = rig.context(1, 1);  // direct light only
+    size_t check = 0;
     for (Point3 target : {Point3(0.0f), Point3(1.0f, 0.0f, 0.5f)}) {
-      const DVec3 x(target), up(0, 1, 0);
-      const double big = polygonIrradiance(x, up, kBigSquare), small = polygonIrradiance(x, up, kSmallSquare);
+      const DVec3 x(target);
+      const double big = polygonIrradiance(x, shadingNormal, kBigSquare);
+      const double small = polygonIrradiance(x, shadingNormal, kSmallSquare);
       const DVec3 toLamp = DVec3(lamp) - x;
-      const double areasAndSky = kSky * (std::numbers::pi - big - small) + 2.0 * big + 30.0 * small;
-      const double point = kIntensity * glm::normalize(toLamp).y / glm::dot(toLamp, toLamp);
+      const double areasAndSky = kSky * (skySeen - big - small) + 2.0 * big + 30.0 * small;
+      const double point = kIntensity * glm::dot(glm::normalize(toLamp), shadingNormal) / glm::dot(toLamp, toLamp);
       for (MisEstimator e : kAllEstimators) {
         // BSDF sampling alone takes no light sample, so no point light (the handout: a null weights.light
         // switches light sampling off, point lights with it; no BSDF sample can find a point).
@@ -527,23 +583,31 @@ TEST_CASE("T9.3 path tracer: area lights, a sky and a point light at once, on a 
         const MeanEstimate m = misMean(context, e, raysTo(target, 40000, 99), 99);
         CAPTURE(nameOf(e));
         CAPTURE(target.x);
-        INFO((flipped ? "the floor's winding faces down (lit on its back)" : "the floor's winding faces up"));
+        INFO(floorName);
         INFO(m.describe(expected));
         agreed.emplace_back(e, m.agrees(expected));
         CHECK(agreed.back().second);
-        if (!flipped) {
-          upright.push_back(m);
-        } else if (const MeanEstimate& facingUp = upright[check++ % upright.size()];
-                   !agreed.back().second && facingUp.agrees(expected) &&
-                   std::abs(facingUp.mean() - m.mean()) > 5.0 * std::hypot(facingUp.standardError(), m.standardError())) {
-          // Only the back side is wrong, and not by chance.
+        if (kind == Floor::WindingUp) {
+          upright.push_back({m, agreed.back().second});
+          continue;
+        }
+        // Only this floor is wrong, and not by chance: the same check on the upright floor agreed.
+        const auto& [facingUp, facingUpAgreed] = upright[check++];
+        if (agreed.back().second || !facingUpAgreed) continue;
+        const bool sameAsFacingUp =  // the back side must give what the front gives
+            std::abs(facingUp.mean() - m.mean()) <= 5.0 * std::hypot(facingUp.standardError(), m.standardError());
+        onlyOneFloorWrong = kind == Floor::TiltedNormals || !sameAsFacingUp;
+        if (kind == Floor::WindingDown && !sameAsFacingUp)
           hintForFailure("only the floor lit on its winding's back side is wrong: take the cosines with the "
                          "normal that faces wo (bsdf.normal()), not the hit's own");
-        }
+        else if (kind == Floor::TiltedNormals)
+          hintForFailure("only the floor with tilted vertex normals is wrong: take every cosine (the light "
+                         "sample's, the point light's, the BSDF sample's throughput) with the shading normal "
+                         "bsdf.normal(), not the geometric normal");
       }
     }
   }
-  hintByEstimators(agreed);
+  if (!onlyOneFloorWrong) hintByEstimators(agreed);
 }
 
 TEST_CASE("T9.3 path tracer: inside a closed emitting enclosure every estimator gives Le / (1 - rho)" *
@@ -611,6 +675,9 @@ TEST_CASE("T9.3 path tracer: after several bounces MIS agrees with light samplin
     const MeanEstimate light = misMean(context, MisEstimator::LightSampling, rays, 104);
     CAPTURE(part.name);
     INFO("light sampling alone " << light.describe(part.reference) << " (the reference's)");
+    HINT("light sampling alone must give the reference's brightness on this floor lit through glossy walls: a wrong "
+         "light sample (Le f cos / pdf, its shadow ray) or a wrong path throughput f cos / pdf, roulette or bounce "
+         "count fails here");
     CHECK(std::abs(light.mean() - part.reference) <= 5.0 * light.judgedStandardError() + 0.0005);
     for (MisEstimator e : {MisEstimator::Power, MisEstimator::Balance}) {
       const MeanEstimate m = misMean(context, e, rays, 105);
@@ -619,6 +686,9 @@ TEST_CASE("T9.3 path tracer: after several bounces MIS agrees with light samplin
       CAPTURE(nameOf(e));
       INFO("MIS " << m.describe(light.mean()) << "; light sampling alone " << light.mean() << " +- "
                   << light.standardError());
+      HINT("MIS must agree with light sampling alone after several bounces, so its weights are at fault: each weight "
+           "takes the pdfs of its own bounce, the BSDF pdf and point of the vertex that shot the ray that found the "
+           "light, updated at every bounce");
       CHECK(std::abs(m.mean() - light.mean()) <= 5.0 * se);
     }
   }
@@ -768,6 +838,9 @@ TEST_CASE("T9.3 path tracer: -m counts bounces, and Russian roulette keeps light
       CAPTURE(nameOf(e));
       INFO(m.describe(expected));
       agreed.emplace_back(e, m.agrees(expected));
+      HINT("with -m depth the enclosure gives Le times the sum of rho^k for k = 0 to depth: stop when bounce >= "
+           "maxDepth after adding the emission found and before light sampling, as task 5; one bounce too many or "
+           "too few, or a biased throughput or roulette, fails here");
       CHECK(agreed.back().second);
     }
   }
@@ -785,6 +858,9 @@ TEST_CASE("T9.3 path tracer: -m counts bounces, and Russian roulette keeps light
   const MeanEstimate m = misMean(context, MisEstimator::Power, fromGlass, 111);
   INFO("inside glass: " << m.describe(2.25));
   const bool glassAgrees = m.agrees(2.25);
+  HINT("seen from inside lossless glass the enclosure is n^2 = 2.25 times as bright: continue with probability q = "
+       "min(0.95, max component of the throughput) and divide by q (a throughput above 1 must not be cut), and count "
+       "emission found after the delta refraction in full");
   CHECK(glassAgrees);
   if (!glassAgrees && agreed.end() == std::find_if(agreed.begin(), agreed.end(), [](auto& a) { return !a.second; }))
     hintForFailure("the depths are right but light above 1 (inside glass) is biased: continue with probability "
@@ -829,8 +905,14 @@ TEST_CASE("T9.3 path tracer: a light hidden by cards near it lights nothing, wit
       CAPTURE(cards);
       INFO(lit << " of " << queries.size() << " points of the floor are lit");
       if (cards) {
+        HINT("with cards just below the lamps no point of the floor may be lit: each shadow ray (area light and point "
+             "light) must run from the surface all the way to the light point, stopping only a tiny relative amount "
+             "short; one of length 1, or a fraction of the distance, passes under the cards");
         CHECK(lit == 0);
       } else {
+        HINT("without the cards the same floor must be lit, by every estimator: a shadow ray that finds the light "
+             "itself (it must stop just short of the light point), or emission found by a BSDF sample that is "
+             "dropped, leaves it black");
         CHECK(lit >= 20);  // BSDF sampling alone finds the lamp for about 90 of them (under 20: p < 1e-20)
       }
     }
@@ -913,11 +995,22 @@ TEST_CASE("T9 no NaN or Inf: near-mirror plates, tiny lights and grazing rays" *
       }
     }
     CAPTURE(nameOf(e));
+    HINT("radiance must be finite: guard the heuristics against overflow, skip light samples with pdf 0, and never "
+         "divide by a zero cosine or a zero distance (a point light on the surface)");
     CHECK(bad == 0);
+    HINT("radiance must never be negative: a cosine used with its sign where it is negative (a light below the "
+         "surface, the throughput of a transmitted bounce) or a weight outside [0, 1] fails here");
     CHECK(negative == 0);
+    HINT("some rays must see light in this scene of lamps: radiance that is black everywhere, light never added or "
+         "every sample discarded by an over-eager guard, fails here");
     CHECK(bright > 0);
     INFO(wrong << " of the " << known << " rays whose radiance the judge knows exactly are off");
+    HINT("a guard of the test itself: it counts the rays whose radiance the judge knows (those that meet nothing or a "
+         "lamp first), fixed by the scene and the judge's own tracing, not by your code");
     CHECK(known > 1000);
+    HINT("a ray that meets nothing must be black (this scene has no sky) and one that meets a lamp first must give "
+         "exactly its Le (the lamps reflect nothing): emission seen by the camera ray weighted or counted twice, or "
+         "light added where there is none, fails here");
     CHECK(wrong == 0);
   }
 }
@@ -1030,12 +1123,23 @@ TEST_CASE("T9.3 path tracer: on Veach's plates MIS is as good as the strategy th
                   << " pixels): variance per sample, light sampling " << light[c].mean() << ", BSDF sampling "
                   << bsdf[c].mean() << ", MIS " << mis[c].mean() << "; " << std::string(misEstimatorName(cells[c].works))
                   << " is the strategy that works here");
+    HINT("a guard of the test itself: the judged cell must hold pixels of that plate under that light, found by the "
+         "judge's own camera rays, not by your code");
     CHECK(bsdf[c].count() >= 4);
     INFO("mean radiance: MIS " << misMean << ", the strategy that works " << worksMean << ", the reference's "
                                << kCellMean[c] << " (+- " << kCellSpread[c] << " over seeds)");
+    HINT("the strategy that works in this cell, run alone, must give the reference's mean radiance: a biased light "
+         "sample (its pdf, the choice probability, the r^2 / cos conversion) or a biased BSDF-sampled emission "
+         "fails here");
     CHECK(std::abs(worksMean - kCellMean[c]) <= 6.0 * kCellSpread[c]);
+    HINT("MIS's mean radiance in the cell must be the reference's and that of the strategy that works: weights that "
+         "do not sum to 1 (a pdf in another measure, another vertex's pdf), or light counted twice or not at all, "
+         "bias it");
     CHECK(std::abs(misMean - kCellMean[c]) <= 6.0 * kCellSpread[c]);
     CHECK(std::abs(misMean - worksMean) <= 0.1 * worksMean);
+    HINT("MIS's variance must be at most 1.2 times that of the strategy that works here: a weight that does not "
+         "favour the strategy whose pdf is larger, or one strategy per vertex chosen by a coin (the one-sample "
+         "model), keeps the failing strategy's fireflies");
     CHECK(mis[c].mean() <= 1.2 * works);
   }
 }

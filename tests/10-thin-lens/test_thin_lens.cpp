@@ -147,15 +147,21 @@ TEST_CASE("T10.1 disk: every point lies in the unit disk, and the points reach i
   for (float a : {0.0f, 0.5f, 0.99999994f})
     for (float b : {0.0f, 0.5f, 0.99999994f}) us.emplace_back(a, b);
   const std::vector<Point2> points = candidate::sampleUnitDisk(us);
+  HINT("a guard of the test itself: one point comes back for each u asked (the judge checks the answer's "
+       "length as it arrives), so it holds for any sampleUnitDisk that returns");
   REQUIRE(points.size() == us.size());
   double largest = 0.0;
   int sectors[8] = {};  // where the points beyond radius 0.7 fall, by angle
   for (size_t k = 0; k < points.size(); ++k) {
     const Point2 p = points[k];
     INFO("u = (" << us[k].x << ", " << us[k].y << ") gave (" << p.x << ", " << p.y << ")");
+    HINT("every point must be finite for every u in [0,1)^2, u = 0 and the square's centre included: a 0 / 0 (the "
+         "concentric map's a = 0 case left unguarded) or a log or sqrt of a negative gives NaN here");
     REQUIRE(std::isfinite(p.x));
     REQUIRE(std::isfinite(p.y));
     const double r = std::hypot(double(p.x), double(p.y));
+    HINT("every point must lie in the unit disk (|p| <= 1): a radius that can pass 1 (2u, or the concentric map "
+         "without a = 2u - 1), or a point of the square rather than the disk, fails here");
     REQUIRE(r <= 1.0 + 1e-6);
     largest = std::max(largest, r);
     if (r > 0.7) {
@@ -164,9 +170,13 @@ TEST_CASE("T10.1 disk: every point lies in the unit disk, and the points reach i
     }
   }
   INFO("the farthest point from the centre is at radius " << largest);
+  HINT("the points must reach the disk's edge (radius above 0.98 as u nears its ends): a radius that stays short of "
+       "1 (a constant below 1, or halved) fails here");
   CHECK(largest > 0.98);
   for (int s = 0; s < 8; ++s) {
     INFO("sector " << s << " of 8 (by angle) has " << sectors[s] << " points beyond radius 0.7");
+    HINT("points near the edge must fall in all 8 sectors of angle: an angle that covers only part of the circle "
+         "(in the polar map phi = pi u, not 2 pi u) fails here");
     CHECK(sectors[s] > 0);
   }
 }
@@ -180,7 +190,11 @@ TEST_CASE("T10.1 disk: the points are uniform by area (chi-square against 1/pi)"
     const ChiSquareResult r =
         chiSquareOnDisk("disk-" + std::to_string(seed), candidate::sampleUnitDisk(uniformPoints(200000, 100 + seed)),
                         &nonFinite);
+    HINT("every point must be finite: a 0 / 0 (the concentric map's a = 0 case left unguarded) gives NaN here");
     CHECK(nonFinite == 0);
+    HINT("the points must be uniform by area over the unit disk (density 1/pi): dA = r dr dphi, so in the polar map "
+         "r = u (not sqrt u) crowds the centre; any map that does not give equal areas equal shares, or points "
+         "outside the disk, fail here");
     checkChiSquare(r);
   }
 }
@@ -196,6 +210,8 @@ TEST_CASE("T10.2 lens: rays start on the lens, a disk of the aperture's radius f
     std::vector<calls::LensQuery> queries;
     for (const Vec2& u : uniformPoints(60000, 200 + uint64_t(index))) queries.emplace_back(pinhole, u);
     const std::vector<Ray> rays = candidate::generateThinLensRays(camera, basisOf(f), queries);
+    HINT("a guard of the test itself: one ray comes back for each query (the judge checks the answer's length as it "
+         "arrives), so it holds for any generateThinLensRay that returns");
     REQUIRE(rays.size() == queries.size());
     std::vector<Point2> onLens;
     double offPlane = 0.0, farthest = 0.0;
@@ -210,10 +226,20 @@ TEST_CASE("T10.2 lens: rays start on the lens, a disk of the aperture's radius f
     INFO("camera at " << str(camera.position) << " looking along " << str(Vec3(f.forward)) << ", lens radius "
                       << camera.apertureRadius << ": origins reach " << offPlane
                       << " out of the lens's plane (along forward) and " << farthest << " from its centre");
+    HINT("ray origins must lie in the lens's plane, across the view through camera.position: a lens point moved "
+         "along forward, or (x, y, 0) added in the world's axes rather than along basis.right and basis.up, fails "
+         "here");
     CHECK(offPlane <= 1e-5 * (1.0 + glm::length(DVec3(camera.position))));
+    HINT("ray origins must lie within apertureRadius of camera.position: the unit disk scaled by the diameter or "
+         "not scaled at all, or a lens point not added to camera.position, fails here");
     CHECK(farthest <= camera.apertureRadius * (1.0 + 1e-5) + 1e-6 * glm::length(DVec3(camera.position)));
     int nonFinite = 0;
+    HINT("the origins, measured in aperture radii along basis.right and basis.up, must be uniform over the unit disk: "
+         "lens points not uniform by area (r = u in the polar map), a lens tilted or squashed (world axes taken for "
+         "the camera's), or a radius other than apertureRadius fails here");
     checkChiSquare(chiSquareOnDisk("lens-" + std::to_string(index), onLens, &nonFinite));
+    HINT("every origin must be finite: a NaN from the disk map (the concentric map's a = 0 case left unguarded) "
+         "fails here");
     CHECK(nonFinite == 0);
     ++index;
   }
@@ -233,6 +259,8 @@ void checkFocus(const Camera& camera, const std::vector<DVec2>& films, double re
   for (const DVec2& s : films)
     for (const Vec2& u : us) queries.emplace_back(pinholeThrough(camera, f, s), u);
   const std::vector<Ray> rays = candidate::generateThinLensRays(camera, basisOf(f), queries);
+  HINT("a guard of the test itself: one ray comes back for each query (the judge checks the answer's length as it "
+       "arrives), so it holds for any generateThinLensRay that returns");
   REQUIRE(rays.size() == queries.size());
   CAPTURE(str(camera.position));
   CAPTURE(camera.apertureRadius);
@@ -263,9 +291,19 @@ void checkFocus(const Camera& camera, const std::vector<DVec2>& films, double re
     INFO("film point (" << films[k].x << ", " << films[k].y << ") (image plane at distance 1): the point in focus is "
                         << str(Vec3(focus.point)) << "; your rays pass the plane of focus up to " << worst
                         << " from it (direction " << str(worstDirection) << "), and their origins spread " << spread);
+    HINT("every ray must have a finite origin and a unit direction: normalise p - l (lens point to the point in "
+         "focus) last; a direction left unnormalised, or a NaN from the disk map or a division by zero, fails here");
     CHECK(finiteUnit);
+    HINT("every ray must reach the plane of focus ahead of its origin: a direction from the point in focus back to "
+         "the lens point (l - p rather than p - l), or a point in focus behind the camera, fails here");
     CHECK(ahead);
+    HINT("every ray from one film point must pass through the pinhole ray's point on the plane of focus, p = o + t d "
+         "with t = focalDistance / dot(d, forward): t = focalDistance along the ray, a direction not re-aimed after "
+         "moving the origin, or precision lost before normalising p - l fails here");
     CHECK(worst <= relativeTolerance * scale);
+    HINT("the lens must be open: the origins of one film point's rays must spread over at least half the aperture "
+         "radius; an origin kept at camera.position, a radius shrunk below apertureRadius, or a lens point that "
+         "ignores uLens fails here");
     CHECK(spread >= 0.5 * camera.apertureRadius);
   }
 }
@@ -307,11 +345,17 @@ TEST_CASE("T10.2 lens of radius 0: the pinhole's rays; a tiny lens: rays next to
     }
     camera.apertureRadius = 0.0f;
     const std::vector<Ray> rays = candidate::generateThinLensRays(camera, basisOf(f), queries);
+    HINT("a guard of the test itself: one ray comes back for each query (the judge checks the answer's length as it "
+         "arrives), so it holds for any generateThinLensRay that returns");
     REQUIRE(rays.size() == pinholes.size());
     for (size_t k = 0; k < rays.size(); ++k) {
       INFO("lens radius 0: pinhole ray " << str(pinholes[k].origin) << " -> " << str(pinholes[k].direction)
                                          << ", yours " << str(rays[k].origin) << " -> " << str(rays[k].direction));
+      HINT("with apertureRadius = 0 every origin must be camera.position: a lens point not scaled by the radius, or "
+           "an offset added to the origin whatever the radius, fails here");
       CHECK(glm::length(rays[k].origin - camera.position) <= 1e-6f * (1.0f + glm::length(camera.position)));
+      HINT("with apertureRadius = 0 the direction must be the pinhole ray's own, to 2e-6: a direction left "
+           "unnormalised, aimed the wrong way (t < 0), or rebuilt rather than taken from pinholeRay fails here");
       CHECK(glm::length(rays[k].direction - pinholes[k].direction) <= 2e-6f);
     }
     camera.apertureRadius = 1e-4f * camera.focalDistance;
@@ -363,6 +407,8 @@ void checkBlur(const Camera& camera, double depth, DVec2 image, uint64_t seed) {
     queries.emplace_back(pinholeThrough(camera, f, s), us[size_t(i)]);
   }
   const std::vector<Ray> rays = candidate::generateThinLensRays(camera, basisOf(f), queries);
+  HINT("a guard of the test itself: one ray comes back for each query (the judge checks the answer's length as it "
+       "arrives), so it holds for any generateThinLensRay that returns");
   REQUIRE(rays.size() == queries.size());
   std::vector<DVec2> hits;
   for (size_t i = 0; i < rays.size(); ++i) {
@@ -383,10 +429,20 @@ void checkBlur(const Camera& camera, double depth, DVec2 image, uint64_t seed) {
                             << "it over a circle of radius " << R << " (image plane at distance 1); your rays: "
                             << n << " of " << kRays << " hit it (expected " << expectedHits << " +- " << sigmaHits
                             << "), centred at (" << mean.x << ", " << mean.y << "), circle radius " << measuredR);
+  HINT("the share of rays that hit the light must be r^2 / (R + r)^2 (a lens spreads light, never adds it): lens "
+       "points beyond the aperture radius (the diameter used), a direction not re-aimed at the plane of focus, or a "
+       "wrong point in focus sends hits outside the circle of confusion");
   CHECK(std::abs(n - expectedHits) <= 5.0 * sigmaHits);
+  HINT("more than 100 rays must hit the light: rays that miss it altogether (a wrong point in focus, directions "
+       "reversed, or rays that are not finite) fail here");
   REQUIRE(n > 100.0);
   // Centre within 0.03 R, radius within 3 %: their standard errors are 0.005 R and 0.4 % (40 seeds measured).
+  HINT("the blur must be centred on the light's pinhole image: a shifted circle means the origin moved without "
+       "re-aiming the ray at the point in focus, or lens points that cover only part of the disk (phi = pi u in the polar map)");
   CHECK(glm::length(mean - image) <= 0.03 * R);
+  HINT("the blur's radius must be the circle of confusion's, R = A |1 - z/F| / z: too small means lens points crowd "
+       "the centre (not uniform by area) or a halved aperture, too large the diameter used, and the wrong size off "
+       "the axis a focus measured along the ray");
   CHECK(std::abs(measuredR - R) <= 0.03 * R);
 }
 

@@ -145,6 +145,7 @@ TEST_CASE("T11.1 Welford: the mean and the sample variance of any sequence, as a
     sequences.push_back(std::move(values));
   }
   const std::vector<calls::Accumulated> results = candidate::addSamples(sequences);
+  HINT("addSamples must return one result per sequence it was given (the call failed or lost sequences)");
   REQUIRE(results.size() == sequences.size());
   for (size_t k = 0; k < sequences.size(); ++k) {
     const std::vector<double>& values = sequences[k];
@@ -159,12 +160,17 @@ TEST_CASE("T11.1 Welford: the mean and the sample variance of any sequence, as a
     INFO("sequence " << k << ": " << values.size() << " values around " << values[0] << ": two-pass mean " << mean
                      << ", sample variance " << variance << "; yours: n " << stats.n << ", mean " << stats.mean
                      << ", sampleVariance " << yourVariance);
+    HINT("n counts every sample added: add 1 to n once per sample, before the mean is updated");
     CHECK(stats.n == values.size());
+    HINT("the running mean is wrong: mean <- mean + (x - mean) / n with the n that counts this sample");
     CHECK(std::abs(stats.mean - mean) <= 1e-12 * std::max(1.0, std::abs(mean)));  // (1.5e-8 around 1e8)
     // Around 1e8 a double resolves 1.5e-8, 1.5e-5 of the spread: any method's
     // deviations carry that error (Welford and two-pass differ by 1e-5 there);
     // a sum of squares is off by its whole size. Elsewhere, rounding only.
     const double tolerance = values[0] > 1e7 ? 1e-3 : 1e-10;
+    HINT("the sample variance is off: M2 <- M2 + delta * (x - mean), delta taken with the old mean and the second "
+         "factor with the new one, and the variance M2 / (n - 1); a sum of squares minus the squared sum loses "
+         "every digit around 1e8 with a spread of 0.001");
     CHECK(std::abs(yourVariance - variance) <= tolerance * variance);
   }
 }
@@ -173,24 +179,32 @@ TEST_CASE("T11.1 Welford: n - 1 in the sample variance; one sample or none has v
           grading(2, "divide M2 by n - 1, not n (the mean came from the same samples); with n < 2 there is no "
                      "spread to measure: return 0, not 0 / 0")) {
   const std::vector<calls::Accumulated> results = candidate::addSamples({{1.0, 3.0}, {5.0}, {}, {2.0, 2.0, 2.0, 6.0}});
+  HINT("addSamples must return one result per sequence it was given, the empty one too");
   REQUIRE(results.size() == 4);
   INFO("{1, 3}: n " << std::get<0>(results[0]).n << ", mean " << std::get<0>(results[0]).mean << ", variance "
                     << std::get<1>(results[0]) << " (expected 2)");
+  HINT("the mean of {1, 3} is 2, and its sample variance 2: divide M2 by n - 1 (the mean came from the same "
+       "samples), not by n");
   CHECK(std::get<0>(results[0]).mean == doctest::Approx(2.0));
   CHECK(std::get<1>(results[0]) == doctest::Approx(2.0));
   INFO("{5}: mean " << std::get<0>(results[1]).mean << ", variance " << std::get<1>(results[1]) << " (expected 5, 0)");
+  HINT("one sample has no spread to measure: its mean is that sample and its variance 0, not M2 / 0 (NaN)");
   CHECK(std::get<0>(results[1]).mean == doctest::Approx(5.0));
   CHECK(std::get<1>(results[1]) == 0.0);
   INFO("{}: n " << std::get<0>(results[2]).n << ", variance " << std::get<1>(results[2]) << " (expected 0, 0)");
+  HINT("no samples: n stays 0 and the variance is 0, not 0 / 0 or 0 / -1");
   CHECK(std::get<0>(results[2]).n == 0);
   CHECK(std::get<1>(results[2]) == 0.0);
   INFO("{2, 2, 2, 6}: variance " << std::get<1>(results[3]) << " (expected 4)");
+  HINT("{2, 2, 2, 6} has sample variance 4 (M2 = 12 over n - 1 = 3): a variance of 3 divides by n");
   CHECK(std::get<1>(results[3]) == doctest::Approx(4.0));
   // The variance of statistics the judge wrote: M2 / (n - 1).
   RunningStatistics a, b;
   a.n = 10, a.mean = 2.0, a.m2 = 9.0;
   b.n = 1, b.mean = 7.0, b.m2 = 0.0;
   const std::vector<double> variances = candidate::sampleVariances({a, b});
+  HINT("sampleVariance, given statistics it did not make, must read them as they are: M2 / (n - 1), and 0 when "
+       "n < 2; one answer per statistics given");
   REQUIRE(variances.size() == 2);
   INFO("n 10, M2 9: your variance " << variances[0] << " (expected 1); n 1: " << variances[1] << " (expected 0)");
   CHECK(variances[0] == doctest::Approx(1.0));
@@ -237,7 +251,11 @@ TEST_CASE("T11.2 rule: stop once 1.96 sigma / sqrt(n) <= tolerance x mean, and n
       what.push_back(label);
     }
     const std::vector<uint8_t> yours = candidate::confidentEnough(all, a);
+    HINT("confidentEnough must answer once per statistics it was given");
     REQUIRE(yours.size() == all.size());
+    HINT("the rule is 1.96 sqrt(sampleVariance / n) <= tolerance x mean, and never before minSpp: the line "
+         "printed says which case (the half-width just inside or outside, no spread, below the minimum, a mean "
+         "of 0 or below) got the wrong answer");
     for (size_t k = 0; k < all.size(); ++k) {
       INFO("tolerance " << a.tolerance << ", min " << a.minSpp << ": " << what[k] << ": expected "
                         << (expected[k] ? "stop" : "go on") << ", yours " << (yours[k] ? "stop" : "go on"));
@@ -259,6 +277,7 @@ TEST_CASE("T11.3 pixel: stops after the first whole batch where the rule holds, 
     sequences.push_back(std::vector<Color>(a.maxSpp, Color(0.3f, 0.2f, 0.1f)));
     sequences.push_back(std::vector<Color>(a.maxSpp, Color(0.0f)));
     const std::vector<candidate::ServedPixel> results = candidate::samplePixels(sequences, a);
+    HINT("samplePixels must return one pixel per sequence of samples it was given");
     REQUIRE(results.size() == sequences.size());
     for (size_t k = 0; k < sequences.size(); ++k) {
       const Expected e = expectedStop(sequences[k], a);
@@ -271,15 +290,24 @@ TEST_CASE("T11.3 pixel: stops after the first whole batch where the rule holds, 
                         << "; yours took " << r.served << " samples, said " << r.pixel.samples << ", returned "
                         << str(r.pixel.estimate) << (r.pixel.confident ? " (confident)" : " (not confident)")
                         << (r.overran ? "; it kept asking for samples far past the maximum" : ""));
+      HINT("the pixel kept asking for samples far past settings.maxSpp: stop there whatever the rule says");
       REQUIRE_FALSE(r.overran);
       if (e.ambiguous) continue;
       ++judged;
+      HINT("the pixel stopped at the wrong n: take whole batches (sample(n) for the next n), check "
+           "confidentEnough after each batch, not per sample, and stop after the first batch where it holds or at "
+           "maxSpp; the statistics follow luminance(c)");
       CHECK(r.served == e.n);
+      HINT("pixel.samples must say how many samples this pixel took, the n it stopped at");
       CHECK(r.pixel.samples == e.n);
+      HINT("the estimate is the colour sum over exactly the samples this pixel took, divided by their number "
+           "(not by maxSpp, not the luminance's mean)");
       CHECK(near(Vec3(r.pixel.estimate), Vec3(e.mean), floatMeanTolerance(sequences[k], e.n)));
+      HINT("a pixel that stopped before maxSpp because the rule held must say confident = true");
       if (e.n < a.maxSpp) CHECK(r.pixel.confident);
     }
   }
+  HINT("too few pixels could be judged: most stops were ambiguous, which a correct pixel loop never makes");
   CHECK(judged > 200);
 }
 
@@ -296,6 +324,7 @@ TEST_CASE("T11.3 pixel: never past the maximum; a dark pixel with rare light run
       sequences.push_back(std::move(values));
     }
     const std::vector<candidate::ServedPixel> results = candidate::samplePixels(sequences, a);
+    HINT("samplePixels must return one pixel per sequence of samples it was given");
     REQUIRE(results.size() == sequences.size());
     for (size_t k = 0; k < sequences.size(); ++k) {
       const Expected e = expectedStop(sequences[k], a);
@@ -303,9 +332,12 @@ TEST_CASE("T11.3 pixel: never past the maximum; a dark pixel with rare light run
       INFO("maximum " << a.maxSpp << ": the rule never holds on this dark pixel (expected n = " << e.n
                       << "); yours asked for " << r.served << (r.overran ? " (and kept asking)" : "") << ", said "
                       << r.pixel.samples << (r.pixel.confident ? ", confident" : ", not confident"));
+      HINT("the pixel asked for more than settings.maxSpp samples: stop at the maximum whatever the rule says "
+           "(a mean near 0 never meets tolerance x mean)");
       CHECK_FALSE(r.overran);
       CHECK(r.served <= a.maxSpp);
       if (e.ambiguous || e.confident) continue;
+      HINT("a dark pixel the rule never stops must run to maxSpp and say so: samples = maxSpp, confident = false");
       CHECK(r.pixel.samples == a.maxSpp);
       CHECK_FALSE(r.pixel.confident);
     }
@@ -313,6 +345,8 @@ TEST_CASE("T11.3 pixel: never past the maximum; a dark pixel with rare light run
   // The smallest render there is, -s 1 --adaptive: one sample, and its colour.
   const Color one(0.3f, 0.5f, 0.7f);
   const std::vector<candidate::ServedPixel> single = candidate::samplePixels({{one}}, settings(0.1, 1, 1, 1));
+  HINT("with a maximum of 1 sample (-s 1 --adaptive) the pixel takes that one sample and returns its colour: "
+       "a batch larger than the maximum is cut to it, and one sample's variance is 0, not 0 / 0");
   REQUIRE(single.size() == 1);
   INFO("a maximum of 1 sample of " << str(Vec3(one)) << ": yours took " << single[0].served << " and returned "
                                    << str(Vec3(single[0].pixel.estimate)));
@@ -352,8 +386,11 @@ TEST_CASE("T11.3 pixel: the rule's bias stays under its bound (many pixels of on
       spp += double(r.pixel.samples) / 6000.0;
     }
   }
+  HINT("a pixel kept asking for samples far past settings.maxSpp: stop there whatever the rule says");
   REQUIRE(overran == 0);
   limitNoise(estimates, "11-adaptive-sampling");
+  HINT("the estimates are biased: the estimate must be the plain mean of the samples taken, and the rule checked "
+       "only after whole batches past the minimum (checked after every sample, it stops on one sample's luck)");
   INFO("the mean of your 6,000 pixels' estimates: " << estimates.describe(1.0) << "; your pixels say they took "
                                                      << spp << " samples on average");
   CHECK(std::abs(estimates.mean() - 1.0) <= 0.005 + 5.0 * estimates.judgedStandardError());
@@ -399,6 +436,7 @@ TEST_CASE("T11.3 image: the samples go where the variance is, not to the flat wa
   seeded.render.seed = testSeed(17);
   const std::vector<std::vector<Color>> sequences = pixelSamples(seeded, {}, mapSettings().maxSpp);
   const std::vector<candidate::ServedPixel> pixels = candidate::samplePixels(sequences, mapSettings());
+  HINT("samplePixels must return one pixel per sequence of samples it was given");
   REQUIRE(pixels.size() == size_t(scene.render.width) * size_t(scene.render.height));
   std::vector<uint32_t> samples;
   int overran = 0;
@@ -407,11 +445,14 @@ TEST_CASE("T11.3 image: the samples go where the variance is, not to the flat wa
     overran += p.overran ? 1 : 0;
   }
   INFO(overran << " pixels asked for samples far past the maximum");
+  HINT("pixels kept asking for samples far past settings.maxSpp: stop there whatever the rule says");
   REQUIRE(overran == 0);
   // The reference's relative variance per sample, per pixel: the noisiest
   // tenth and the quietest half of the pixels, from the judge's own files.
   const Image mean = readImage(referenceImagePath("11-adaptive-sampling", "box-adaptive", ".exr"));
   const Image variance = readImage(referenceImagePath("11-adaptive-sampling", "box-adaptive", ".variance.exr"));
+  HINT("the judge's reference images do not match this scene: a broken installation, not your code (tell the "
+       "course staff)");
   REQUIRE(mean.pixels.size() == samples.size());
   std::vector<std::pair<double, size_t>> noise;
   for (size_t i = 0; i < mean.pixels.size(); ++i) {
@@ -430,8 +471,13 @@ TEST_CASE("T11.3 image: the samples go where the variance is, not to the flat wa
   const uint32_t most = *std::max_element(samples.begin(), samples.end());
   INFO("fewest samples in a pixel " << fewest << ", most " << most << " (the minimum is " << mapSettings().minSpp
                                     << ", the maximum " << mapSettings().maxSpp << ")");
+  HINT("a pixel took fewer than minSpp or more than maxSpp samples: never stop before the minimum, always at the "
+       "maximum");
   CHECK(fewest >= mapSettings().minSpp);
   CHECK(most <= mapSettings().maxSpp);
+  HINT("the samples do not follow the noise: each pixel must stop on its own statistics (of luminance(c), not one "
+       "channel), so that the caustic and the reflections take many samples and a flat lit wall few; the same count "
+       "everywhere fails");
   CHECK(noisy >= 2.0 * quiet);
   CHECK(quiet < 0.75 * double(mapSettings().maxSpp));
 }

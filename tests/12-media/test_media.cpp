@@ -117,6 +117,7 @@ TEST_CASE("T12.1 free flight: distances follow exp(-sigmaT t), and the rest reac
     std::vector<calls::FlightQuery> queries;
     for (float u : us) queries.emplace_back(c.sigmaT, c.tMax, u);
     const std::vector<FreeFlight> flights = candidate::sampleFreeFlight(queries);
+    HINT("sampleFreeFlight must return one flight per query it was given");
     REQUIRE(flights.size() == queries.size());
     // kBins bins of equal probability among the flights that scatter, and one for those that pass.
     const double pass = std::isinf(c.tMax) ? 0.0 : std::exp(-double(c.sigmaT) * double(c.tMax));
@@ -140,8 +141,13 @@ TEST_CASE("T12.1 free flight: distances follow exp(-sigmaT t), and the rest reac
     CAPTURE(c.tMax);
     INFO("flights that scatter must end in [0, tMax), the others at tMax exactly; " << bad << " did not ("
                                                                                     << example << ")");
+    HINT("a flight that scatters ends in [0, tMax); one that does not reaches the surface: scattered false and t = "
+         "tMax exactly (a flight that would end at or past tMax reaches the surface instead)");
     CHECK(bad == 0);
     const ChiSquareResult r = chiSquareTest(observed, expected);
+    HINT("the distances do not follow exp(-sigmaT t): invert the CDF 1 - exp(-sigmaT t), t = -ln(1 - u) / sigmaT "
+         "(or -ln(u) / sigmaT), with this query's sigmaT; too many or too few reaching the surface means the "
+         "surface's probability exp(-sigmaT tMax) is off");
     INFO("distances against exp(-sigmaT t), " << kBins << " bins of equal probability and one for the surface: chi2 "
                                                << r.statistic << ", p = " << r.pValue << "; " << observed[kBins]
                                                << " reached the surface, expected " << expected[kBins] << " " << r.failure);
@@ -158,6 +164,7 @@ TEST_CASE("T12.1 free flight: the pdf is the density at t, or the probability of
       std::vector<calls::FlightQuery> queries;
       for (float u : us) queries.emplace_back(sigmaT, tMax, u);
       const std::vector<FreeFlight> flights = candidate::sampleFreeFlight(queries);
+      HINT("sampleFreeFlight must return one flight per query it was given");
       REQUIRE(flights.size() == queries.size());
       int bad = 0;
       std::string example;
@@ -172,6 +179,8 @@ TEST_CASE("T12.1 free flight: the pdf is the density at t, or the probability of
       CAPTURE(sigmaT);
       CAPTURE(tMax);
       INFO(bad << " of " << flights.size() << " pdfs wrong (" << example << ")");
+      HINT("the pdf must be the probability of what you returned: sigmaT exp(-sigmaT t) at the t of a flight that "
+           "scattered, exp(-sigmaT tMax) for one that reached the surface (the example says which)");
       CHECK(bad == 0);
     }
   }
@@ -185,6 +194,7 @@ TEST_CASE("T12.1 free flight: thin and dense media, a surface at 0, u at the end
     for (const float tMax : {0.0f, 1e-3f, 1.0f, 1e4f})
       for (const float u : {0.0f, 1e-7f, 0.5f, 1.0f - 1e-7f, 0.99999994f}) queries.emplace_back(sigmaT, tMax, u);
   const std::vector<FreeFlight> flights = candidate::sampleFreeFlight(queries);
+  HINT("sampleFreeFlight must return one flight per query it was given");
   REQUIRE(flights.size() == queries.size());
   for (size_t i = 0; i < flights.size(); ++i) {
     // (Not structured bindings: Clang 14 cannot capture one in CAPTURE's lambda.)
@@ -196,18 +206,26 @@ TEST_CASE("T12.1 free flight: thin and dense media, a surface at 0, u at the end
     CAPTURE(f.t);
     CAPTURE(f.scattered);
     CAPTURE(f.pdf);
+    HINT("t must be finite and in [0, tMax] at every u: ln(0) at u = 0 (use 1 - u, or log1p(-u)) gives an "
+         "infinite t, and a flight past tMax must stop at the surface");
     CHECK(std::isfinite(f.t));
     CHECK(f.t >= 0.0f);
     CHECK(f.t <= tMax);
+    HINT("the pdf must be finite and not negative at every u, in thin and dense media alike");
     CHECK(std::isfinite(f.pdf));
     CHECK(f.pdf >= 0.0f);
     // A pdf of 0 is honest only for a surface whose probability underflows
     // (-ln(u) at u = 0 reaches it; the exponentials cancel in the weight).
+    HINT("a pdf of 0 says the flight could not happen: only a surface whose probability exp(-sigmaT tMax) "
+         "underflows may have it");
     if (f.scattered || std::exp(-double(sigmaT) * double(tMax)) > 1e-30) CHECK(f.pdf > 0.0f);
+    HINT("a surface at distance 0 is always reached: no flight can scatter before it");
     if (tMax == 0.0f) CHECK_FALSE(f.scattered);
     // Where the surface is out of reach (exp(-sigmaT tMax) < 1e-30), every u
     // away from the ends of [0, 1) scatters, whichever end of it a sampler
     // maps to short flights.
+    HINT("in a dense medium whose surface is out of reach (exp(-sigmaT tMax) < 1e-30) every flight scatters: a "
+         "flight that reached the surface there has a t that overflowed or a comparison the wrong way round");
     if (sigmaT * tMax > 70.0f && u >= 1e-7f && u <= 1.0f - 1e-7f) CHECK(f.scattered);
   }
 }
@@ -221,6 +239,7 @@ TEST_CASE("T12.2 phase: Henyey-Greenstein's value, a density over the sphere" *
   for (const float g : {-0.9f, -0.5f, -0.1f, 0.0f, 0.2f, 0.7f, 0.95f})
     for (int i = 0; i <= 100; ++i) queries.emplace_back(-1.0f + 0.02f * float(i), g);
   const std::vector<float> values = candidate::henyeyGreenstein(queries);
+  HINT("henyeyGreenstein must return one value per query it was given");
   REQUIRE(values.size() == queries.size());
   for (size_t i = 0; i < values.size(); ++i) {
     const float cosTheta = std::get<0>(queries[i]), g = std::get<1>(queries[i]);
@@ -229,6 +248,8 @@ TEST_CASE("T12.2 phase: Henyey-Greenstein's value, a density over the sphere" *
     CAPTURE(g);
     CAPTURE(values[i]);
     CAPTURE(expected);
+    HINT("p = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos)^1.5), cos between the direction travelled and the new one (g > 0 "
+         "is onwards; a cosine against the direction back flips g), normalised over the sphere (the 4 pi)");
     CHECK(std::abs(double(values[i]) - expected) <= 1e-4 * expected);
   }
 }
@@ -245,6 +266,7 @@ TEST_CASE("T12.2 phase sampling: directions against the Henyey-Greenstein pdf, a
     std::vector<calls::PhaseSampleQuery> queries;
     for (const Vec2& u : us) queries.emplace_back(Vec3(travel), g, u);
     const std::vector<Vec3> directions = candidate::sampleHenyeyGreenstein(queries);
+    HINT("sampleHenyeyGreenstein must return one direction per query it was given");
     REQUIRE(directions.size() == queries.size());
     // Cells of equal probability in cos theta, times equal ranges of phi in the judge's own frame.
     const Frame frame = Frame::fromNormal(Vec3(travel));
@@ -266,8 +288,12 @@ TEST_CASE("T12.2 phase sampling: directions against the Henyey-Greenstein pdf, a
     }
     CAPTURE(g);
     INFO(notUnit << " of " << kN << " directions not unit (or not finite)");
+    HINT("every sampled direction must be a finite unit vector: sin theta = sqrt(max(0, 1 - cos^2)), and g = 0 "
+         "handled apart (the inverted CDF divides by g)");
     CHECK(notUnit == 0);
     const ChiSquareResult r = chiSquareTest(observed, expected);
+    HINT("the directions do not follow Henyey-Greenstein: the cosines must come from the inverted CDF of cos theta, "
+         "phi uniform in [0, 2 pi), and the direction built around the one travelled (a frame of it)");
     INFO("chi-square of (cos theta, phi) against Henyey-Greenstein: chi2 " << r.statistic << ", p = " << r.pValue
                                                                            << " " << r.failure);
     CHECK(r.pValue >= kChiSquareP);
@@ -275,6 +301,8 @@ TEST_CASE("T12.2 phase sampling: directions against the Henyey-Greenstein pdf, a
     // (1 - g)(1 + g) (Bhatia and Davis), whatever the sampler.
     cosine.setVarianceCeiling((1.0 - g) * (1.0 + g), "values in [-1, 1] with mean g: (1 - g)(1 + g)");
     INFO("mean cosine with the direction travelled: " << cosine.describe(g));
+    HINT("the mean cosine with the direction travelled must be g: a mean of -g builds the direction around the "
+         "direction back");
     CHECK(cosine.agrees(g));
   }
 }
@@ -299,6 +327,7 @@ void checkTransmittance(const Scene& scene, const std::vector<calls::Transmittan
       all.push_back(copy);
     }
   const std::vector<float> values = candidate::transmittance(scene, all);
+  HINT("transmittance must return one value per query it was given");
   REQUIRE(values.size() == all.size());
   for (size_t q = 0; q < queries.size(); ++q) {
     const double t = expected[q];
@@ -316,16 +345,23 @@ void checkTransmittance(const Scene& scene, const std::vector<calls::Transmittan
     INFO("ray from " << str(ray.origin) << " along " << str(ray.direction) << ", length " << std::get<1>(queries[q])
                      << ", starting in medium " << std::get<2>(queries[q]));
     INFO(outside << " of " << kCalls << " values outside [0, 1]");
+    HINT("a transmittance is a fraction of light: every value must lie in [0, 1] (a NaN or a negative exponent "
+         "fails here)");
     CHECK(outside == 0);
     // Past a surface nothing gets through: an estimator that is never
     // negative and has mean 0 is 0 on every call, whatever its method.
     if (t == 0.0) {
       INFO(notZero << " of " << kCalls << " values are not exactly 0 where a surface blocks the ray");
+      HINT("past an opaque surface nothing gets through: a surface that is not an interface (no medium change) "
+           "makes the transmittance 0");
       CHECK(notZero == 0);
     }
     INFO(m.describe(t));
     // An exact estimator has no noise to hide in: the rays' offsets at each
     // interface (a few 1e-5 along the ray) shift its value by about 1e-4 of T.
+    HINT("the transmittance's mean must be exp(-sum of sigmaT d) over the media along the ray: each interface "
+         "crossed changes the medium (scene.mediumAcross), and the segment's length counts only up to the "
+         "query's distance");
     CHECK((m.agrees(t) || std::abs(m.mean() - t) <= 1e-3 * t));
   }
 }
@@ -457,6 +493,7 @@ TEST_CASE("T12.3 direct lighting in media: through the phase function in a fog, 
     }
   }
   const std::vector<Color> values = candidate::directLightingInMedia(scene, settings, queries);
+  HINT("directLightingInMedia must return one value per query it was given");
   REQUIRE(values.size() == queries.size());
 
   const double sigmaT = 0.6;
@@ -506,6 +543,9 @@ TEST_CASE("T12.3 direct lighting in media: through the phase function in a fog, 
            << ", g " << x.g << ", at " << str(Vec3(x.point)) << ", wo " << str(Vec3(x.wo))
            << "; a point light and a small area light above");
       INFO(m.describe(expected[channel]));
+      HINT("direct light at a vertex is wrong: at a point in the medium the phase function takes the BSDF's place "
+           "(and no cosine), on the floor the BSDF and its cosine; both with the light dimmed by the transmittance "
+           "to it, exp(-sigmaT r), not by a shadow ray's yes or no; the line printed says which vertex");
       CHECK(m.agrees(expected[channel]));
     }
   }
@@ -576,6 +616,7 @@ TEST_CASE("T12.4 absorption: behind a slab that only absorbs, a light is dimmed 
     distances.push_back(2.0 / std::abs(double(direction.z)));  // the box's depth along the ray (it stays inside x, y)
   }
   const std::vector<Color> radiance = candidate::tracePathsInMedia(scene, {1, 8}, queries);
+  HINT("tracePathsInMedia must return one radiance per query it was given");
   REQUIRE(radiance.size() == queries.size());
   MeanEstimate ratio;  // radiance / (Le exp(-sigmaT d)), in red
   for (size_t i = 0; i < radiance.size(); ++i) {
@@ -585,6 +626,9 @@ TEST_CASE("T12.4 absorption: behind a slab that only absorbs, a light is dimmed 
   limitNoise(ratio, "12-media");
   INFO("camera rays through 2 units of a medium of sigmaT 1.2, albedo 0, onto a light of radiance " << str(le)
        << "; your radiance over Le exp(-sigmaT d): " << ratio.describe(1.0));
+  HINT("through an absorbing slab the light must be dimmed by exactly exp(-sigmaT d). Brighter: the free flight "
+       "samples with sigmaS (0 here) instead of sigmaT; darker: the surface is weighted by the transmittance "
+       "without dividing by P(pass)");
   CHECK(ratio.agrees(1.0));
 
   // Beside the slab, through a vacuum: the light itself, Le. No noise is
@@ -601,6 +645,8 @@ TEST_CASE("T12.4 absorption: behind a slab that only absorbs, a light is dimmed 
     seen.add(std::isfinite(L.x) ? double(L.x) / double(le.x) : 1e30);
   }
   INFO("camera rays beside the medium, through a vacuum onto the light: your radiance over Le: " << seen.describe(1.0));
+  HINT("through a vacuum, beside the medium, the light must be seen as it is (Le), and without noise: a path that "
+       "samples a medium where there is none, or weights a vacuum's flight, fails here");
   CHECK_FALSE(seen.tooNoisy());
   CHECK(seen.agrees(1.0));
 }
@@ -630,7 +676,10 @@ TEST_CASE("T12.4 absorption: a ball of ink in a haze that fills the scene: out o
     expected.push_back(double(le.x) * std::exp(-kHaze * (d - c) - kInk * c));
   }
   const std::vector<Color> radiance = candidate::tracePathsInMedia(scene, {1, 8}, queries);
+  HINT("tracePathsInMedia must return one radiance per query it was given");
   REQUIRE(radiance.size() == queries.size());
+  HINT("a ray that leaves an interface's interior enters the medium outside it, here the scene's haze "
+       "(scene.mediumAcross(hit, wi, medium), or scene.medium), not a vacuum; inside, the ball's own medium");
   MeanEstimate ratio;  // radiance / the exact transmitted light, in red
   for (size_t i = 0; i < radiance.size(); ++i)
     ratio.add(std::isfinite(radiance[i].x) ? double(radiance[i].x) / expected[i] : 1e30);

@@ -34,11 +34,29 @@ void recordLeaderboard(const std::string& name, double value, bool lowerIsBetter
 // One line into PATHLAB_VERDICT_FILE (nothing when it is not set).
 void appendVerdictLine(const std::string& line);
 
-// What a failed check points to, when a test has several checks and its
-// own hint fits only some of them: called where the check fails, it is
-// printed under the test instead of the test's hint (each such hint once,
-// in order). A test whose checks all point to one mistake needs none.
+// What a failed check points to, for a test with several checks: printed
+// under the failing test instead of the test's own hint (each such hint
+// once, in order, joined by " ALSO: "). Two ways to give one:
+//
+//   HINT("t is the distance along the unit direction ...");  // the checks after it,
+//   CHECK(...);                                               // to the end of the block
+//
+// names what the checks that follow measure (as doctest's INFO, it lasts to
+// the end of the enclosing block; a later HINT in the same block takes
+// over). hintForFailure(text), called where a check failed, gives a hint
+// chosen by what failed together (which estimators, which floor).
+// tools/hint-catalogue lists every test's hints (docs/hints.md) and fails
+// a test with several checks that leaves one to the test's fixed hint.
 void hintForFailure(const std::string& hint);
+
+class CheckHint {
+ public:
+  explicit CheckHint(const char* hint);
+  ~CheckHint();
+  CheckHint(const CheckHint&) = delete;
+  CheckHint& operator=(const CheckHint&) = delete;
+};
+#define HINT(text) const ::pathlab::test::CheckHint DOCTEST_ANONYMOUS(pathlabCheckHint_)(text)
 
 // The test case running now, and 0, 1, 2, ... on successive calls within it:
 // the key of data a suite stores per check (reference_noise.h).

@@ -49,8 +49,12 @@ void recordLeaderboard(const std::string& name, double value, bool lowerIsBetter
 namespace {
 const doctest::TestCaseData* g_currentTestCase = nullptr;
 int g_checkIndex = 0;
-std::vector<std::string> g_failureHints;  // this test case's, from hintForFailure
+std::vector<std::string> g_failureHints;  // this test case's, from hintForFailure and failed checks under a HINT
+std::vector<const char*> g_checkHints;    // the HINTs in scope, innermost last
 }  // namespace
+
+CheckHint::CheckHint(const char* hint) { g_checkHints.push_back(hint); }
+CheckHint::~CheckHint() { g_checkHints.pop_back(); }
 
 void hintForFailure(const std::string& hint) {
   if (std::find(g_failureHints.begin(), g_failureHints.end(), hint) == g_failureHints.end())
@@ -136,8 +140,12 @@ struct GradingListener : doctest::IReporter {
   void test_case_exception(const doctest::TestCaseException&) override {}
   void subcase_start(const doctest::SubcaseSignature&) override {}
   void subcase_end() override {}
-  void log_assert(const doctest::AssertData&) override {}
-  void log_message(const doctest::MessageData&) override {}
+  void log_assert(const doctest::AssertData& data) override {
+    if (data.m_failed && !g_checkHints.empty()) hintForFailure(g_checkHints.back());
+  }
+  void log_message(const doctest::MessageData& data) override {  // FAIL_CHECK and FAIL
+    if (!(data.m_severity & doctest::assertType::is_warn) && !g_checkHints.empty()) hintForFailure(g_checkHints.back());
+  }
   void test_case_skipped(const doctest::TestCaseData&) override {}
   void test_run_end(const doctest::TestRunStats&) override {
     if (cases_ > 0) std::printf("SCORE %d/%d points (%d/%d test cases passed)\n", earned_, total_, passed_, cases_);
