@@ -155,10 +155,12 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
     }
     const int most = settings.samplesPerPixel;  // -s: the most a pixel may take
     adaptive.maxSpp = uint32_t(most);
-    adaptive.batch = uint32_t(args.batch ? checkedCount("--batch", *args.batch, 1, most) : std::min(32, most));
+    const AdaptiveSettings defaults;  // task 11's one set (adaptive_sampling.h)
+    adaptive.batch = uint32_t(args.batch ? checkedCount("--batch", *args.batch, 1, most)
+                                         : std::min(int(defaults.batch), most));
     adaptive.minSpp = uint32_t(args.minSpp ? checkedCount("--min-spp", *args.minSpp, 1, most)
-                                           : std::max(int(adaptive.batch), std::min(64, most) / int(adaptive.batch) *
-                                                                               int(adaptive.batch)));
+                                           : std::max(int(adaptive.batch), std::min(int(defaults.minSpp), most) /
+                                                                               int(adaptive.batch) * int(adaptive.batch)));
     if (const std::string problem = adaptiveSettingsProblem(adaptive); !problem.empty()) {
       char given[128];
       std::snprintf(given, sizeof given, " (-s %u, --min-spp %u, --batch %u)", adaptive.maxSpp, adaptive.minSpp,

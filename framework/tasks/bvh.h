@@ -1,5 +1,6 @@
 // Task 3 — bounding volume hierarchy. Implemented in tasks/03-bvh/bvh.cpp
-// (student) and solutions/03-bvh/bvh.cpp (reference).
+// (the student's file; where the task is not the student's, the programs
+// link the course's reference in its place).
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,6 @@
 // Task 1 — camera rays. Implemented in tasks/01-camera-rays/camera_rays.cpp
-// (student) and solutions/01-camera-rays/camera_rays.cpp (reference).
+// (the student's file; where the task is not the student's, the programs
+// link the course's reference in its place).
 #pragma once
 
 #include "core/camera.h"

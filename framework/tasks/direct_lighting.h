@@ -1,5 +1,7 @@
 // Task 4 — direct lighting with shadows. Implemented in
-// tasks/04-direct-lighting/direct_lighting.cpp (student) and solutions/.
+// tasks/04-direct-lighting/direct_lighting.cpp (the student's file; where the
+// task is not the student's, the programs link the course's reference in its
+// place).
 #pragma once
 
 #include <optional>

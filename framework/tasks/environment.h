@@ -1,5 +1,6 @@
 // Task 7 — environment lighting with importance sampling. Implemented in
-// tasks/07-environment/environment.cpp (student) and solutions/ (reference).
+// tasks/07-environment/environment.cpp (the student's file; where the task is
+// not the student's, the programs link the course's reference in its place).
 //
 // Equirectangular maps, +y up: a direction w has
 //   theta = acos(w.y) in [0, pi]   (0 at the zenith, row 0 of the image)

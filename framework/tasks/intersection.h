@@ -1,5 +1,7 @@
 // Task 2 — ray–triangle and ray–sphere intersection. Implemented in
-// tasks/02-intersection/intersection.cpp (student) and solutions/ (reference).
+// tasks/02-intersection/intersection.cpp (the student's file; where the task
+// is not the student's, the programs link the course's reference in its
+// place).
 #pragma once
 
 #include <optional>

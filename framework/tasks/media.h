@@ -1,6 +1,7 @@
 // Task 12 — light in fog and jade: homogeneous participating media.
-// Implemented in tasks/12-media/media.cpp (student) and
-// solutions/12-media/media.cpp (reference).
+// Implemented in tasks/12-media/media.cpp (the student's file; where the task
+// is not the student's, the programs link the course's reference in its
+// place).
 #pragma once
 
 #include "core/bsdf.h"

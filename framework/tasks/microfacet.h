@@ -1,6 +1,7 @@
 // Task 8 — rough metal and plastic: the GGX microfacet model, sampled by its
-// visible normals. Implemented in tasks/08-microfacet/microfacet.cpp
-// (student) and solutions/08-microfacet/microfacet.cpp (reference).
+// visible normals. Implemented in tasks/08-microfacet/microfacet.cpp (the
+// student's file; where the task is not the student's, the programs link the
+// course's reference in its place).
 // Every direction here is in the local shading frame: the surface normal is
 // +z; directions are unit and point away from the surface. wo is above the
 // surface (wo.z > 0: the framework turns the frame to wo's side).

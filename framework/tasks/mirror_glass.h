@@ -1,5 +1,6 @@
 // Task 6 — mirror and glass. Implemented in tasks/06-mirror-glass/mirror_glass.cpp
-// (student) and solutions/06-mirror-glass/mirror_glass.cpp (reference).
+// (the student's file; where the task is not the student's, the programs
+// link the course's reference in its place).
 // Every direction here is in the local shading frame: the surface normal is
 // +z, pointing outside (into the medium of index 1); directions are unit and
 // point away from the surface.

@@ -1,6 +1,7 @@
 // Task 9 — multiple importance sampling: light sampling and BSDF sampling,
-// each weighed where it is strong. Implemented in tasks/09-mis/mis.cpp
-// (student) and solutions/09-mis/mis.cpp (reference).
+// each weighed where it is strong. Implemented in tasks/09-mis/mis.cpp (the
+// student's file; where the task is not the student's, the programs link the
+// course's reference in its place).
 #pragma once
 
 #include <optional>
@@ -47,8 +48,15 @@ float oneLightPdf(const TraceContext& context, const Point3& from, const Vec3& w
 // How a path weighs each light it finds: the light sample's weight at a
 // vertex, and the weight of an emitter a BSDF sample hits (or of the
 // environment it escapes to), each from (pdf of its own strategy, pdf of the
-// other). MIS: a heuristic for both. Light sampling alone: light 1, BSDF 0.
-// BSDF sampling alone: light 0, BSDF 1.
+// other). A null weight switches its strategy off, the renderers' four
+// estimators (misWeights, render/strategies.h):
+//   MIS (power or balance): a heuristic for both;
+//   light sampling alone: light 1, bsdf null (no emission found by a BSDF
+//     sample counts, but after the camera ray or a delta bounce);
+//   BSDF sampling alone: light null, bsdf 1. No light sample is taken at
+//     all, point lights included: a point light is then never seen (no BSDF
+//     sample can find a point), so BSDF sampling alone renders a scene lit
+//     only by point lights black. T9.3 tests this.
 struct MisWeights {
   float (*light)(float pdfLight, float pdfBsdf) = nullptr;
   float (*bsdf)(float pdfBsdf, float pdfLight) = nullptr;

@@ -1,5 +1,6 @@
 // Task 5 — path tracing. Implemented in tasks/05-path-tracing/path_tracing.cpp
-// (student) and solutions/05-path-tracing/path_tracing.cpp (reference).
+// (the student's file; where the task is not the student's, the programs
+// link the course's reference in its place).
 #pragma once
 
 #include "core/trace.h"

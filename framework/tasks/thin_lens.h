@@ -1,6 +1,6 @@
 // Task 10 — a thin-lens camera: depth of field. Implemented in
-// tasks/10-thin-lens/thin_lens.cpp (student) and
-// solutions/10-thin-lens/thin_lens.cpp (reference).
+// tasks/10-thin-lens/thin_lens.cpp (the student's file; where the task is not
+// the student's, the programs link the course's reference in its place).
 #pragma once
 
 #include "core/camera.h"

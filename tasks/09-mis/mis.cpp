@@ -115,9 +115,10 @@ float oneLightPdf(const TraceContext& context, const Point3& from, const Vec3& w
 //   5. The BSDF sample, roulette and the next ray as in task 5; keep its
 //      point and pdf for steps 1 and 2.
 // A null weight switches its strategy off: weights.light null, no light
-// sampling (BSDF sampling alone); weights.bsdf null, no emission found by
-// a BSDF sample (light sampling alone, as task 5). So one function gives the
-// three estimators the renderer compares.
+// sampling at all, point lights included (BSDF sampling alone); weights.bsdf
+// null, no emission found by a BSDF sample (light sampling alone, as task
+// 5). So one function gives the estimators the renderer compares
+// (MisWeights in framework/tasks/mis.h defines each).
 //
 // PITFALL: both pdfs of one weight belong to the same direction and the
 // same vertex: the previous vertex's BSDF pdf is for the ray that arrived

@@ -26,14 +26,11 @@
 namespace pathlab {
 namespace {
 
-// Loose enough that quiet pixels stop well before the maximum (a path-traced
-// pixel's spread is often as large as its mean: 0.05 would need ~1,500 samples).
+// Task 11's defaults, with the views' tolerance and maximum (adaptive_sampling.h).
 AdaptiveSettings viewSettings() {
   AdaptiveSettings a;
-  a.tolerance = 0.2;
-  a.batch = 16;
-  a.minSpp = 16;
-  a.maxSpp = 256;
+  a.tolerance = kAdaptiveViewTolerance;
+  a.maxSpp = kAdaptiveViewMaxSpp;
   return a;
 }
 

@@ -17,8 +17,11 @@ line holding "check_doc_paths: not checked", and is skipped.
 
 In a student release (no solutions/) a path inside a folder or file the
 release leaves out (solutions/, tests/mutants/, tools/grade, ...) is not
-checked; in the course repository, a file only a release has (RELEASE_ONLY:
-its course's task list) counts as there.
+checked in code and scripts, but the pages a student reads (STUDENT_PAGES:
+the README, docs/index.md, the handouts, the task files and their API
+headers) must name
+only what the release holds; in the course repository, a file only a
+release has (RELEASE_ONLY: its course's task list) counts as there.
 
 usage: check_doc_paths.py REPOSITORY"""
 import itertools
@@ -35,6 +38,7 @@ LAYER_HEADER = re.compile(r"(?<![\w./-])((?:util|core|tasks|scene|render|debug)/
 PATH = re.compile(r"(?<![\w./$-])((?:%s)/(?:\{[^}\s]*\}|\$\w+|[\w.*<>+-]|/)*)" % "|".join(re.escape(t) for t in TOP))
 TEXT = {".md", ".h", ".cpp", ".in", ".py", ".sh", ".txt", ".json", ".cmake", ""}
 SKIP = ("build", ".git", "__pycache__")
+STUDENT_PAGES = ("README.md", "docs/index.md", "tasks/*/README.md", "tasks/*/*.cpp", "framework/tasks/*.h")
 PLACEHOLDER = {"NN-name": "[0-9][0-9]-*", "NN": "[0-9][0-9]*", "name": "*", "NAME": "*", "FILE": "*",
                "LAYER": "*", "...": "*"}
 
@@ -101,7 +105,9 @@ def main() -> int:
                 globs = list(patterns(mention))
                 count += 1
                 found = all(exists(root, g) or exists(root / rel.parent, g) or g in RELEASE_ONLY for g in globs)
-                if not found and not any(left_out_of_release(root, g) for g in globs):
+                shown = any(rel.match(page) for page in STUDENT_PAGES) and len(rel.parts) == len(Path(
+                    next(page for page in STUDENT_PAGES if rel.match(page))).parts)
+                if not found and (shown or not any(left_out_of_release(root, g) for g in globs)):
                     problems.append(f"{rel}:{number}: {mention.rstrip('.,:;')} does not exist")
     for p in problems:
         print(p)

@@ -511,6 +511,8 @@ ALTERNATES = [
        "  // A direction on the spherical cap below v, added to v.\n  const float phi = 2.0f * kPi * u.x;\n  const float z = (1.0f - u.y) * (1.0f + v.z) - v.z;\n  const float sinTheta = std::sqrt(std::clamp(1.0f - z * z, 0.0f, 1.0f));\n  const Vec3 n = Vec3(sinTheta * std::cos(phi), sinTheta * std::sin(phi), z) + v;")]),
     (8, "even-mixture", "the plastic's two lobes each sampled half the time",
      [("  return std::clamp(coat / (coat + base), 0.1f, 0.9f);", "  (void)coat, (void)base;\n  return 0.5f;")]),
+    (9, "roulette-from-the-first-bounce", "Russian roulette from the first bounce on (unbiased, only noisier: any start is right)",
+     [("  constexpr int kRouletteFromBounce = 3;", "  constexpr int kRouletteFromBounce = 1;")]),
     (9, "sky-chosen-half-the-time", "the sky chosen with probability 1/2, the area lights sharing the rest",
      [("int lightCount(const Lights& lights) { return int(lights.areas.size()) + (lights.environment ? 1 : 0); }",
        "int lightCount(const Lights& lights) { return int(lights.areas.size()) + (lights.environment ? 1 : 0); }\n\n"

@@ -1,0 +1,121 @@
+#!/usr/bin/env python3
+"""Every subset of the tasks is a complete course, as its student release
+reads: for each subset below, tools/make-student-release --text-only makes
+the release (no build), and then
+
+  - the pages a student reads name only paths the release holds
+    (check_doc_paths.py, strict for those pages in a release), and every
+    relative link in the README, docs/index.md and the handouts resolves;
+  - the README's task table has a row per task, linking its handout, and
+    says "not handed out" exactly for the tasks the course withholds; its
+    layout lists only folders and tools the release holds;
+  - a handout that builds on another task ("task 4's shadow ray", "as in
+    task 5") finds that task's recipe in the release: the other task is
+    handed out, or its handout keeps "## The recipe" (its maths);
+  - the recipes the extension tasks lean on are there whole: task 4's
+    shadow-ray contract and task 5's Russian roulette.
+And docs/submitting.md's table of task files is the task list.
+
+usage: check_release_text.py REPOSITORY [--tasks 5,9 ...]"""
+import re
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+SUBSETS = ["1,2,3,4,5,6,7", "8,9,10,11,12", "5,9", "1,12", "3,9,12"]
+RECIPE_MUST_HOLD = {4: ["offsetRayOrigin", "1 − 10⁻⁴"], 5: ["Russian roulette", "divide the throughput by q"]}
+LINK = re.compile(r"\[[^\]]*\]\(([^)\s]+)\)")
+
+
+def handouts(release: Path):
+    """{task number: handout path}."""
+    return {int(p.parent.name[:2]): p for p in sorted(release.glob("tasks/[0-9][0-9]-*/README.md"))}
+
+
+def check_subset(repo: Path, subset: str, scratch: Path) -> list:
+    release = scratch / f"release-{subset.replace(',', '-')}"
+    made = subprocess.run([str(repo / "tools" / "make-student-release"), "--text-only", "--worktree", str(release),
+                           "--tasks", subset], capture_output=True, text=True)
+    if made.returncode != 0:
+        return [f"make-student-release --tasks {subset} failed: {made.stderr.strip()[-400:]}"]
+    problems = []
+    handed_out = {int(n) for n in subset.split(",")}
+
+    paths = subprocess.run([sys.executable, str(Path(__file__).with_name("check_doc_paths.py")), str(release)],
+                           capture_output=True, text=True)
+    if paths.returncode != 0:
+        problems += [line for line in paths.stdout.splitlines() if "does not exist" in line]
+
+    pages = [release / "README.md", release / "docs" / "index.md"] + list(handouts(release).values())
+    for page in pages:
+        for target in LINK.findall(page.read_text()):
+            if re.match(r"[a-z]+:", target) or target.startswith("#"):
+                continue
+            if not (page.parent / target.split("#")[0]).exists():
+                problems.append(f"{page.relative_to(release)}: the link {target} leads nowhere")
+
+    readme = (release / "README.md").read_text()
+    for number, handout in handouts(release).items():
+        folder = handout.parent.name
+        row = re.search(rf"^\| {number} [^|]*\| \[`tasks/{folder}/`\]\(tasks/{folder}/README.md\) \| ([^|]*)\|$",
+                        readme, re.M)
+        if not row:
+            problems.append(f"README.md: no task-table row linking tasks/{folder}/README.md")
+        elif ("not handed out" in row.group(1)) == (number in handed_out):
+            problems.append(f"README.md: task {number}'s row says {row.group(1).strip()!r}")
+    layout = readme[readme.index("```\n", readme.index("## Layout")) + 4:]
+    layout = layout[:layout.index("```\n")]
+    for folder in re.findall(r"^(\S+/)", layout, re.M):
+        if not (release / folder).exists():
+            problems.append(f"README.md's layout lists {folder}, which the release has not")
+    tools_entry = re.search(r"^tools/ +(.*(?:\n {13}.*)*)", layout, re.M)
+    for name in re.findall(r"(?:^|, )([\w.-]+/?)", " ".join(tools_entry.group(1).split()) if tools_entry else ""):
+        if not (release / "tools" / name).exists():
+            problems.append(f"README.md's layout lists tools/{name}, which the release has not")
+
+    for number, handout in handouts(release).items():
+        text = handout.read_text()
+        if number not in handed_out:
+            recipe = text.split("## The recipe", 1)
+            if len(recipe) < 2 or len(recipe[1].strip()) < 200:
+                problems.append(f"{handout.relative_to(release)}: a task not handed out keeps no recipe")
+            for phrase in RECIPE_MUST_HOLD.get(number, []):
+                if phrase not in text:
+                    problems.append(f"{handout.relative_to(release)}: its recipe lacks {phrase!r}")
+            continue
+        for other in sorted({int(n) for n in re.findall(r"\btasks? (\d+)(?!\.\d)", text)} - {number}):
+            target = handouts(release).get(other)
+            if target is None:
+                problems.append(f"{handout.relative_to(release)}: names task {other}, which the release has not")
+            elif other not in handed_out and "## The recipe" not in target.read_text():
+                problems.append(f"{handout.relative_to(release)}: builds on task {other}, whose handout keeps "
+                                f"no recipe in this release")
+    return [f"[tasks {subset}] {p}" for p in problems]
+
+
+def check_submitting_page(repo: Path) -> list:
+    """docs/submitting.md's table: each task's file and its name, as the task list has them."""
+    sys.path.insert(0, str(repo / "tools"))
+    import pathlab_tasks
+    rows = re.findall(r"^\| (\d+) \| `tasks/([^/]+)/([^`]+)` \| `([^`]+)` \|$", (repo / "docs" / "submitting.md").read_text(),
+                      re.M)
+    expected = [(str(n), folder, name, name) for n, (folder, name) in sorted(pathlab_tasks.tasks(repo).items())]
+    return [] if rows == expected else [f"docs/submitting.md: its task table is not the task list {expected}"]
+
+
+def main() -> int:
+    repo = Path(sys.argv[1]).resolve()
+    subsets = sys.argv[sys.argv.index("--tasks") + 1:] if "--tasks" in sys.argv else SUBSETS
+    problems = check_submitting_page(repo)
+    with tempfile.TemporaryDirectory() as scratch:
+        for subset in subsets:
+            problems += check_subset(repo, subset, Path(scratch))
+    for p in problems:
+        print(p)
+    print(f"{len(subsets)} course subsets ({'; '.join(subsets)}): {len(problems)} problems")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
