@@ -19,9 +19,9 @@ In a student release (no solutions/) a path inside a folder or file the
 release leaves out (solutions/, tests/mutants/, tools/grade, ...) is not
 checked in code and scripts, but the pages a student reads (STUDENT_PAGES:
 the README, docs/index.md, the handouts, the task files and their API
-headers) must name
-only what the release holds; in the course repository, a file only a
-release has (RELEASE_ONLY: its course's task list) counts as there.
+headers) must name only what the release holds; in the course repository,
+a file only a release has (RELEASE_ONLY: its course's task list) counts as
+there.
 
 usage: check_doc_paths.py REPOSITORY"""
 import itertools
@@ -95,6 +95,7 @@ def main() -> int:
     for rel, text in texts(root):
         if re.search(r"^\s*(#|//).*check_doc_paths: not checked", text, re.M):
             continue
+        shown = any(rel.match(page) and len(rel.parts) == page.count("/") + 1 for page in STUDENT_PAGES)
         for number, line in enumerate(text.splitlines(), 1):
             if re.match(r"\s*#\s*include", line):
                 continue  # the layers test checks includes
@@ -105,8 +106,6 @@ def main() -> int:
                 globs = list(patterns(mention))
                 count += 1
                 found = all(exists(root, g) or exists(root / rel.parent, g) or g in RELEASE_ONLY for g in globs)
-                shown = any(rel.match(page) for page in STUDENT_PAGES) and len(rel.parts) == len(Path(
-                    next(page for page in STUDENT_PAGES if rel.match(page))).parts)
                 if not found and (shown or not any(left_out_of_release(root, g) for g in globs)):
                     problems.append(f"{rel}:{number}: {mention.rstrip('.,:;')} does not exist")
     for p in problems:
