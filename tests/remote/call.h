@@ -123,4 +123,9 @@ typename C::Result call(A&&... args) {
 // and with control characters replaced): shown under a failing test.
 std::string takeCandidateOutput();
 
+// A new test case begins: the candidate's output so far and the times it
+// died are not this test's (judge.cpp starts a candidate again after it
+// died, at most a few times per test).
+void newTestCase();
+
 }  // namespace pathlab::remote

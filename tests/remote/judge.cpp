@@ -25,6 +25,11 @@ namespace pathlab::remote {
 namespace {
 
 constexpr size_t kOutputKept = 8192;  // bytes of the candidate's output shown under a failing test
+// A candidate that died this often in one test is not started again in it:
+// its later calls fail at once. (Each start of a sandboxed candidate takes
+// tens of milliseconds: a crash in a loop of 400 calls would spend the
+// test's time limit on restarts, and the crash would read as a timeout.)
+constexpr int kDeathsPerTest = 3;
 
 std::string candidatePath() {
   if (const char* path = std::getenv("PATHLAB_CANDIDATE"); path && *path) return path;
@@ -55,6 +60,10 @@ class Candidate {
 
   std::string exchange(uint32_t id, const char* name, const std::string& request, uint64_t maxAnswerBytes,
                        const AskHandler* asks) {
+    if (deaths_ >= kDeathsPerTest) {
+      throw CandidateError(lastDeath_ + "; not started again in this test after " + std::to_string(deaths_) +
+                           " such ends (while computing " + name + ")");
+    }
     if (!process_.running()) start();
     uint32_t status = 0;
     std::string answer;
@@ -75,10 +84,9 @@ class Candidate {
       const std::string how = died(name);
       // How the candidate ended, and what was wrong with its answer (a crash
       // mid-answer, or an answer the judge refuses, such as one too long).
-      throw CandidateError(how.empty() ? std::string("the candidate broke the protocol during ") + name + ": " + e.what()
-                                       : how + " (" + e.what() + ")");
+      throw CandidateError(lastDeath_ = how + " (" + e.what() + ")");
     }
-    if (!answered) throw CandidateError(died(name));
+    if (!answered) throw CandidateError(lastDeath_ = died(name));
     switch (Status(status)) {
       case Status::Ok:
         return answer;
@@ -90,6 +98,12 @@ class Candidate {
         throw CandidateError(std::string("the candidate could not read the request for ") + name + ": " +
                              printable(answer));
     }
+  }
+
+  void newTestCase() {
+    deaths_ = 0;
+    lastDeath_.clear();
+    takeOutput();
   }
 
   std::string takeOutput() {
@@ -111,9 +125,12 @@ class Candidate {
   }
 
   // Keeps what the candidate prints. A process it left behind may hold the
-  // pipe open forever: once the candidate is gone, drain what is there and stop.
+  // pipe open forever: once the candidate is gone, drain what is there and
+  // stop. Reads a pipe's whole capacity at a time: a candidate printing
+  // megabytes waits for this thread each time the pipe is full, and on a
+  // busy machine each wait is a scheduler's time slice.
   void drainOutput(int fd) {
-    char buffer[4096];
+    char buffer[1 << 16];
     for (;;) {
       const int ready = CandidateProcess::waitReadable(fd, 50);
       if (ready < 0) break;
@@ -137,13 +154,15 @@ class Candidate {
     candidateGone_ = false;
   }
 
-  // Reaps a candidate that stopped answering; describes how it ended.
+  // Reaps a candidate that stopped answering; describes how it ended and
+  // counts it (the caller keeps what it reports in lastDeath_).
   std::string died(const char* name) {
     closePipes();
     // Let a crashing candidate (or the sandbox reporting its crash) finish
     // exiting before the kill, so its own end is the one reported.
     const std::string how = process_.reap(1000);
     joinDrain();
+    ++deaths_;
     return how + " while computing " + name;
   }
 
@@ -174,6 +193,8 @@ class Candidate {
   std::mutex outputMutex_;
   std::string output_;
   size_t dropped_ = 0;
+  int deaths_ = 0;          // in this test case
+  std::string lastDeath_;   // how the last one went
 };
 
 Candidate& candidate() {
@@ -192,5 +213,10 @@ std::string exchange(uint32_t id, const char* name, const std::string& request, 
 }
 
 std::string takeCandidateOutput() { return candidate().takeOutput(); }
+
+void newTestCase() {
+  std::lock_guard<std::mutex> lock(callMutex);
+  candidate().newTestCase();
+}
 
 }  // namespace pathlab::remote

@@ -1,7 +1,7 @@
 // The candidate process on this system (candidate_process.h), driven
 // through the judge's own exchange(): answers, an exception, the output
-// shown under a failing test, a crash, an exit code, and a fresh candidate
-// after each death. This program is both sides: started with
+// shown under a failing test, a crash, an exit code, a fresh candidate
+// after each death, and none after the third death in one test. This program is both sides: started with
 // PATHLAB_TEST_CANDIDATE set, it is the candidate.
 //   CTest candidate-process runs the POSIX half; tools/windows-check runs the
 //   Windows half under Wine.
@@ -115,8 +115,15 @@ int main() {
     tooLong = e.what();
   }
   expect(contains(tooLong, "a message of 9 bytes is over the limit of 8 bytes"), "an answer too long refused (" + tooLong + ")");
-  expect(remote::exchange(1, "answer", "after", remote::kMaxAnswerBytes) == "after back", "a fresh candidate after it");
+  // Three deaths in one test: the next call fails at once, naming the last;
+  // a new test case starts a fresh candidate again.
+  const std::string spent = failureOf(1, "answer");
+  expect(contains(spent, "over the limit of 8 bytes") && contains(spent, "not started again in this test after 3"),
+         "no fourth start in the same test (" + spent + ")");
+  remote::newTestCase();
+  expect(remote::exchange(1, "answer", "after", remote::kMaxAnswerBytes) == "after back",
+         "a fresh candidate in the next test");
 
-  std::printf("%d passed, %d failed\n", 10 - failures, failures);
+  std::printf("%d passed, %d failed\n", 11 - failures, failures);
   return failures == 0 ? 0 : 1;
 }

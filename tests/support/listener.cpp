@@ -101,7 +101,7 @@ struct GradingListener : doctest::IReporter {
     g_currentTestCase = &data;
     g_checkIndex = 0;
     g_failureHints.clear();
-    remote::takeCandidateOutput();  // output of earlier tests is not this test's
+    remote::newTestCase();  // earlier tests' output and crashes are not this test's
   }
   void test_case_reenter(const doctest::TestCaseData&) override {}
   void test_case_end(const doctest::CurrentTestCaseStats& stats) override {
