@@ -19,9 +19,9 @@ In a student release (no solutions/) a path inside a folder or file the
 release leaves out (solutions/, tests/mutants/, tools/grade, ...) is not
 checked in code and scripts, but the pages a student reads (STUDENT_PAGES:
 the README, the docs but COURSE_PAGES, the handouts, the task files and
-their API headers) must name only what the release holds; in the course repository,
-a file only a release has (RELEASE_ONLY: its course's task list) counts as
-there.
+their API headers) must name only what the release holds; in the course
+repository, a file only a release has (RELEASE_ONLY: its course's task
+list) counts as there.
 
 usage: check_doc_paths.py REPOSITORY"""
 import itertools

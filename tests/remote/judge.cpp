@@ -81,12 +81,11 @@ class Candidate {
       stop();  // the judge refused an ask: the candidate waits for a reply it will not get
       throw;
     } catch (const std::exception& e) {
-      const std::string how = died(name);
       // How the candidate ended, and what was wrong with its answer (a crash
       // mid-answer, or an answer the judge refuses, such as one too long).
-      throw CandidateError(lastDeath_ = how + " (" + e.what() + ")");
+      throw CandidateError(died(name, e.what()));
     }
-    if (!answered) throw CandidateError(lastDeath_ = died(name));
+    if (!answered) throw CandidateError(died(name));
     switch (Status(status)) {
       case Status::Ok:
         return answer;
@@ -154,16 +153,17 @@ class Candidate {
     candidateGone_ = false;
   }
 
-  // Reaps a candidate that stopped answering; describes how it ended and
-  // counts it (the caller keeps what it reports in lastDeath_).
-  std::string died(const char* name) {
+  // Reaps a candidate that stopped answering, counts it, and describes how
+  // it ended (and `why` the judge gave up on its answer, if it did).
+  std::string died(const char* name, const char* why = nullptr) {
     closePipes();
     // Let a crashing candidate (or the sandbox reporting its crash) finish
     // exiting before the kill, so its own end is the one reported.
     const std::string how = process_.reap(1000);
     joinDrain();
     ++deaths_;
-    return how + " while computing " + name;
+    lastDeath_ = how + " while computing " + name + (why ? std::string(" (") + why + ")" : "");
+    return lastDeath_;
   }
 
   void stop() {

@@ -1,8 +1,9 @@
 // The candidate process on this system (candidate_process.h), driven
 // through the judge's own exchange(): answers, an exception, the output
 // shown under a failing test, a crash, an exit code, a fresh candidate
-// after each death, and none after the third death in one test. This program is both sides: started with
-// PATHLAB_TEST_CANDIDATE set, it is the candidate.
+// after each death, and none after the third death in one test. This
+// program is both sides: started with PATHLAB_TEST_CANDIDATE set, it is the
+// candidate.
 //   CTest candidate-process runs the POSIX half; tools/windows-check runs the
 //   Windows half under Wine.
 #include <chrono>
