@@ -7,7 +7,7 @@
 #          them); the other suites' sources are compiled with -fsyntax-only.
 #   tsan   TSan: the multithreaded render loop (framework tests), the CLI, the
 #          GUI's background workers, and the grader on task 5 (with the same
-#          TSan build).
+#          TSan build; the course repository only).
 #   fuzz   libFuzzer: each of the five targets for RUNS executions (default
 #          2000), with the seed fixed at 1 so the job is repeatable.
 # Installs clang and its sanitizer runtime if missing (Debian packages).
@@ -61,9 +61,11 @@ for job in "${jobs[@]}"; do
       workflow tsan
       # One task: every judge runs the same render loop (task 5's renders the
       # most); task 1 beside it added 20 s and no code path.
-      step "TSan: the grader on the reference, task 5, in the same build (each test case in its own TSan process)"
-      tools/grade solutions --tasks 5 --sanitize thread --build-dir build-tsan \
-        --out build-tsan/grade-results.json --fail-under 100 --timeout 300 ;;
+      if [[ -x tools/grade ]]; then  # a student release has no grader and no solutions/
+        step "TSan: the grader on the reference, task 5, in the same build (each test case in its own TSan process)"
+        tools/grade solutions --tasks 5 --sanitize thread --build-dir build-tsan \
+          --out build-tsan/grade-results.json --fail-under 100 --timeout 300
+      fi ;;
     fuzz)
       step "fuzzing, $runs executions per target"
       tools/fuzz "$runs" 1 ;;  # a fixed seed: the CI run is repeatable

@@ -4,8 +4,10 @@ reads: for each subset below, tools/make-student-release --text-only makes
 the release (no build), and then
 
   - the pages a student reads name only paths the release holds
-    (check_doc_paths.py, strict for those pages in a release), and every
-    relative link in the README, docs/index.md and the handouts resolves;
+    (check_doc_paths.py, strict for those pages in a release), every
+    relative link in the README, the docs and the handouts resolves, and
+    no page keeps a "course repository only" or "student release only"
+    marker (tools/make-student-release resolves them);
   - the README's task table has a row per task, linking its handout, and
     says "not handed out" exactly for the tasks the course withholds; its
     layout lists only folders and tools the release holds;
@@ -47,9 +49,12 @@ def check_subset(repo: Path, subset: str, scratch: Path) -> list:
     if paths.returncode != 0:
         problems += [line for line in paths.stdout.splitlines() if "does not exist" in line]
 
-    pages = [release / "README.md", release / "docs" / "index.md"] + list(handouts(release).values())
+    pages = [release / "README.md"] + sorted((release / "docs").glob("*.md")) + list(handouts(release).values())
     for page in pages:
-        for target in LINK.findall(page.read_text()):
+        if "course repository only" in page.read_text() or "student release only" in page.read_text():
+            problems.append(f"{page.relative_to(release)}: a course/release marker is left in the release")
+        prose = re.sub(r"`[^`\n]*`", "", re.sub(r"^```.*?^```", "", page.read_text(), flags=re.S | re.M))
+        for target in LINK.findall(prose):  # links outside code
             if re.match(r"[a-z]+:", target) or target.startswith("#"):
                 continue
             if not (page.parent / target.split("#")[0]).exists():
