@@ -36,6 +36,53 @@ foreach(folder IN LISTS _pathlab_task_folders)
 endforeach()
 list(LENGTH PATHLAB_TASK_NAMES PATHLAB_TASK_COUNT)
 
+# pathlab_task_identifier(folder out): the task's name in C++ identifiers,
+# "01-camera-rays" -> CameraRays: its debugger.cpp defines add<it>Views and
+# its lab_warps.cpp (where it has warps) add<it>Warps.
+function(pathlab_task_identifier folder out)
+  string(REGEX REPLACE "^[0-9][0-9]-" "" stem ${folder})
+  string(REPLACE "-" ";" words ${stem})
+  set(id "")
+  foreach(word IN LISTS words)
+    string(SUBSTRING ${word} 0 1 first)
+    string(SUBSTRING ${word} 1 -1 rest)
+    string(TOUPPER ${first} first)
+    string(APPEND id ${first}${rest})
+  endforeach()
+  set(${out} ${id} PARENT_SCOPE)
+endfunction()
+
+# pathlab_task_names(n title label): what the programs call task n, from its
+# folder: the handout's first line "# Task N — Title", and the label of
+# tasks/NN-name/task.json (the GUI's name for its panel; tools/pathlab_tasks.py
+# reads the same file and checks the rest of it). Both as C++ string contents.
+function(pathlab_task_names n title_out label_out)
+  math(EXPR i "${n} - 1")
+  list(GET PATHLAB_TASK_NAMES ${i} folder)
+  set(readme ${CMAKE_SOURCE_DIR}/tasks/${folder}/README.md)
+  set(manifest ${CMAKE_SOURCE_DIR}/tasks/${folder}/task.json)
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${readme} ${manifest})
+  file(STRINGS ${readme} first LIMIT_COUNT 1 ENCODING UTF-8)
+  if(NOT first MATCHES "^# Task ${n} — (.+)$")
+    message(FATAL_ERROR "tasks/${folder}/README.md should start \"# Task ${n} — Title\", not \"${first}\"")
+  endif()
+  string(REPLACE "–" "-" title "${CMAKE_MATCH_1}")  # the GUI's font has no en dash
+  if(NOT EXISTS ${manifest})
+    message(FATAL_ERROR "tasks/${folder}/task.json is missing (every task folder has one: docs/architecture.md, \"The task list\")")
+  endif()
+  file(READ ${manifest} json)
+  string(JSON label ERROR_VARIABLE error GET "${json}" label)
+  if(error)
+    message(FATAL_ERROR "tasks/${folder}/task.json: no \"label\" (${error})")
+  endif()
+  foreach(var title label)
+    string(REPLACE "\\" "\\\\" ${var} "${${var}}")
+    string(REPLACE "\"" "\\\"" ${var} "${${var}}")
+  endforeach()
+  set(${title_out} "${title}" PARENT_SCOPE)
+  set(${label_out} "${label}" PARENT_SCOPE)
+endfunction()
+
 # The tasks the course hands out, PATHLAB_HANDED_OUT (numbers): a student
 # release lists them in tasks/handed-out.txt (tools/make-student-release
 # --tasks; comma-separated, '#' starts a comment); the course repository has

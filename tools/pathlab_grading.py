@@ -11,23 +11,23 @@ import os
 import re
 import shlex
 import shutil
-import stat
 import sys
 import tempfile
 import time
 import zipfile
-import zlib
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
-from pathlab_sandbox import JUDGE_MEMORY, MemoryWatch, run  # noqa: E402
+from pathlab_run import clip as clip_to, run  # noqa: E402
+from pathlab_sandbox import JUDGE_MEMORY, MemoryWatch  # noqa: E402
+from pathlab_include_rule import LAYERS, canonical, files_read, system_include_dirs  # noqa: E402
+from pathlab_submission import find_task_files, unpack_zip  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 TASKS = pathlab_tasks.tasks()  # {n: (folder, file)}: the tasks/NN-name folders
 OUTPUT_LIMIT = 6000          # characters of a test's output kept in results.json
 MAX_TASK_FILE = 1 << 20      # a task file larger than 1 MB is refused
-MAX_ZIP_BYTES = 64 << 20     # what a submission zip may unpack to
 # The limits of a grade (tools/grade's defaults, so Gradescope's; tools/check's).
 TEST_TIMEOUT = 60.0          # seconds per test case
 TASK_BUDGET = 300.0          # seconds for one task: compiling and all its tests
@@ -35,115 +35,11 @@ SUBMISSION_BUDGET = 1200.0   # seconds for the whole submission
 
 
 def clip(text: str, limit: int = OUTPUT_LIMIT) -> str:
-    return text if len(text) <= limit else text[: limit // 2] + "\n[... output cut ...]\n" + text[-limit // 2 :]
-
-
-# ---------------------------------------------------------------- intake
-
-def unpack_zip(path: Path, into: Path):
-    """Unpacks what can be unpacked safely; returns a note per member left out
-    (links, names that climb out or are too long, clashes, unreadable data).
-    A zip that cannot be read at all raises ValueError."""
-    notes = []
-    try:
-        archive = zipfile.ZipFile(path)
-        members = archive.infolist()
-    except (zipfile.BadZipFile, OSError, ValueError, RuntimeError, EOFError) as e:
-        raise ValueError(f"{path.name} is not a readable zip archive ({e})") from None
-    total = 0
-    with archive:
-        for info in members:
-            name = Path(info.filename)
-            shown = info.filename[:80]
-            if info.is_dir():
-                continue
-            if name.is_absolute() or ".." in name.parts or stat.S_ISLNK(info.external_attr >> 16):
-                notes.append(f"{shown}: left out (a link, or a path that leaves the archive)")
-                continue
-            if any(len(part.encode()) > 200 for part in name.parts) or len(info.filename.encode()) > 1000:
-                notes.append(f"{shown}...: left out (a name too long)")
-                continue
-            target = into / name
-            created = False
-            try:
-                target.parent.mkdir(parents=True, exist_ok=True)
-                with archive.open(info) as src, open(target, "xb") as dst:
-                    created = True
-                    while chunk := src.read(1 << 16):
-                        total += len(chunk)
-                        if total > MAX_ZIP_BYTES:
-                            raise ValueError(f"{path.name} unpacks to more than {MAX_ZIP_BYTES >> 20} MB")
-                        dst.write(chunk)
-            except ValueError:
-                raise
-            except (zipfile.BadZipFile, zlib.error, OSError, RuntimeError, EOFError, NotImplementedError) as e:
-                # Corrupt or encrypted data, or a file where a folder of the same name is (or the reverse).
-                reason = e.strerror if isinstance(e, OSError) and e.strerror else str(e)[:100]  # no grader paths
-                notes.append(f"{shown}: left out ({type(e).__name__}: {reason})")
-                if created:  # what this member began to write (never an earlier member of the same name)
-                    target.unlink(missing_ok=True)
-    return notes
-
-
-def find_task_files(folder: Path):
-    """For each task, the file graded and a note on what else was found."""
-    by_name = {}
-    for dirpath, dirnames, filenames in os.walk(folder):  # symbolic links are not followed
-        dirnames[:] = sorted(d for d in dirnames if not d.startswith("."))
-        for name in filenames:
-            by_name.setdefault(name, []).append(Path(dirpath) / name)
-    found = {}
-    for task, (directory, file_name) in TASKS.items():
-        paths = [p for p in by_name.get(file_name, []) if p.is_file() and not p.is_symlink()]
-        if not paths:
-            continue
-        # A repository's tasks/NN-name/ copy first, then the shallowest.
-        paths.sort(key=lambda p: (p.parent.name != directory, len(p.relative_to(folder).parts), str(p)))
-        note = f" ({len(paths) - 1} other {file_name} ignored)" if len(paths) > 1 else ""
-        found[task] = (paths[0], note)
-    return found
+    return clip_to(text, limit)
 
 
 # ---------------------------------------------------------------- building
 
-# The framework's layer folders (framework/util, framework/core, ...): a task
-# file includes their headers as "core/scene.h", and system headers.
-LAYERS = sorted(p.name for p in (ROOT / "framework").iterdir() if p.is_dir())
-
-
-def system_include_dirs(compiler: str, arguments):
-    """The compiler's own header folders (#include <...> search list), as it reports them."""
-    flags = [a for a in arguments if a.startswith(("-std=", "-stdlib=", "--target", "-nostdinc"))]
-    code, out = run([compiler, "-xc++", *flags, "-E", "-v", "-o", os.devnull, os.devnull], timeout=60)
-    dirs, inside = [], False
-    for line in out.splitlines():
-        if line.startswith("#include <...> search starts here"):
-            inside = True
-        elif line.startswith("End of search list"):
-            break
-        elif inside and line.startswith(" "):
-            dirs.append(canonical(line.split(" (framework directory)")[0].strip()) + os.sep)
-    if code != 0 or not dirs:
-        raise RuntimeError(f"could not list {compiler}'s header folders:\n" + clip(out, 2000))
-    return dirs
-
-
-def canonical(path: str) -> str:
-    """A path as the include check compares it: links resolved (and, on Windows, one case and one separator)."""
-    return os.path.normcase(os.path.realpath(path))
-
-
-def files_read(preprocessor_output: str, dependency_file: Path):
-    """Every file the preprocessor opened or asked for: -H lines (". path",
-    printed even before an error) and the -M -MG dependency list (which also
-    has the implicit ones, and the missing ones)."""
-    files = [m.group(1) for m in re.finditer(r"^\.+ (\S.*)$", preprocessor_output, re.M)]
-    # A file it could not open stops it before -H or -M name it (uid mode: the repository is unreadable).
-    files += re.findall(r"fatal error: (.+?): (?:Permission denied|Is a directory|No such file or directory)$",
-                        preprocessor_output, re.M)
-    if dependency_file.exists():
-        files += dependency_file.read_text(errors="replace").replace("\\\n", " ").split(":", 1)[-1].split()
-    return files
 def compile_command(build: Path, task: int):
     """The compiler line CMake uses for task `task`'s reference file, as a list."""
     directory, file_name = TASKS[task]

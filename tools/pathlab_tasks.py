@@ -4,7 +4,11 @@ tasks/NN-name/name.cpp with the name's dashes as underscores; its API header
 framework/tasks/name.h; its reference solutions/NN-name/name.cpp;
 its suite tests/NN-name/. A student release lists the tasks its course
 hands out in tasks/handed-out.txt (tools/make-student-release --tasks); the
-others link the reference and have no suite there."""
+others link the reference and have no suite there.
+
+What the tools show of a task is its own too: its handout's first line is
+its title, and tasks/NN-name/task.json (manifest()) holds the rest."""
+import json
 import os
 import random
 import re
@@ -24,6 +28,64 @@ def tasks(root: Path = ROOT) -> dict:
     if sorted(found) != list(range(1, len(found) + 1)):
         raise SystemExit(f"pathlab_tasks: tasks/ folders are not numbered 01 to {len(found):02d}: {sorted(found)}")
     return found
+
+
+# tasks/NN-name/task.json: what the tools show of the task, kept with it.
+#   label       the GUI's name for its panel (at most 14 characters)
+#   writeup     the figures of its write-up section (tools/writeup), in order:
+#               {"kind": "render", "args": pathlab's arguments, "caption": ...} or
+#               {"kind": "view", "args": `pathlab debug --task N`'s further arguments, "caption": ...}
+#   screenshot  its panel in docs/images/gui-panel-<N>.png (tools/make-gui-screenshots):
+#               {"scene": a scene file or "" (the built-in one), "script": pathlab-gui --script lines}
+MANIFEST_KEYS = {"label": str, "writeup": list, "screenshot": dict}
+LABEL_MAX = 14
+
+
+def manifest(number: int, root: Path = ROOT) -> dict:
+    """Task `number`'s task.json, checked: every key known and of its type, every figure well formed."""
+    folder = tasks(root)[number][0]
+    path = root / "tasks" / folder / "task.json"
+    where = f"tasks/{folder}/task.json"
+    try:
+        data = json.loads(path.read_text())
+    except FileNotFoundError:
+        raise SystemExit(f"pathlab_tasks: {where} is missing (every task folder has one: "
+                         "docs/architecture.md, 'The task list')")
+    except json.JSONDecodeError as e:
+        raise SystemExit(f"pathlab_tasks: {where}: not JSON ({e})")
+    if not isinstance(data, dict):
+        raise SystemExit(f"pathlab_tasks: {where}: expected an object")
+    for key, value in data.items():
+        if key not in MANIFEST_KEYS:
+            raise SystemExit(f"pathlab_tasks: {where}: unknown key '{key}' (known: {', '.join(MANIFEST_KEYS)})")
+        if not isinstance(value, MANIFEST_KEYS[key]):
+            raise SystemExit(f"pathlab_tasks: {where}: '{key}' should be a {MANIFEST_KEYS[key].__name__}")
+    for key in MANIFEST_KEYS:
+        if key not in data:
+            raise SystemExit(f"pathlab_tasks: {where}: no '{key}'")
+    if not 0 < len(data["label"]) <= LABEL_MAX or '"' in data["label"] or "\\" in data["label"]:
+        raise SystemExit(f"pathlab_tasks: {where}: 'label' should be 1 to {LABEL_MAX} characters, no quotes")
+    for i, figure in enumerate(data["writeup"]):
+        if not (isinstance(figure, dict) and set(figure) == {"kind", "args", "caption"} and
+                figure["kind"] in ("render", "view") and all(isinstance(figure[k], str) for k in figure)):
+            raise SystemExit(f"pathlab_tasks: {where}: writeup[{i}] should be "
+                             '{"kind": "render" or "view", "args": "...", "caption": "..."}')
+    shot = data["screenshot"]
+    if not (set(shot) == {"scene", "script"} and isinstance(shot["scene"], str) and isinstance(shot["script"], list)
+            and all(isinstance(line, str) and "\n" not in line for line in shot["script"])):
+        raise SystemExit(f"pathlab_tasks: {where}: screenshot should be "
+                         '{"scene": "file or empty", "script": ["line", ...]}')
+    return data
+
+
+def title(number: int, root: Path = ROOT) -> str:
+    """The handout's title: "Camera rays" from "# Task 1 — Camera rays"."""
+    folder = tasks(root)[number][0]
+    first = (root / "tasks" / folder / "README.md").read_text().split("\n", 1)[0]
+    match = re.fullmatch(rf"# Task {number} — (.+)", first.strip())
+    if not match:
+        raise SystemExit(f"pathlab_tasks: tasks/{folder}/README.md should start \"# Task {number} — Title\"")
+    return match.group(1)
 
 
 # The seven core tasks (camera rays to environment lighting): what a course
@@ -104,7 +166,7 @@ def commit_random(stage: str, root: Path = ROOT) -> random.Random:
 SUBMISSION_FLAGS = ["-D_GLIBCXX_ASSERTIONS"]
 
 
-USAGE = ("usage: pathlab_tasks.py core | handed-out | check LIST | sample STAGE COUNT VARIABLE [--numbers | --others]"
+USAGE = ("usage: pathlab_tasks.py core | handed-out | manifest N KEY | check LIST | sample STAGE COUNT VARIABLE [--numbers | --others]"
          " | draw STAGE COUNT < LINES")
 
 if __name__ == "__main__":  # for shell scripts
@@ -113,6 +175,11 @@ if __name__ == "__main__":  # for shell scripts
         print(core_tasks())
     elif sys.argv[1:] == ["handed-out"]:
         print(",".join(map(str, handed_out())))
+    elif len(sys.argv) == 4 and sys.argv[1] == "manifest" and sys.argv[2].isdigit():
+        if sys.argv[3] not in MANIFEST_KEYS:
+            raise SystemExit(USAGE)
+        value = manifest(int(sys.argv[2]))[sys.argv[3]]
+        print(value if isinstance(value, str) else json.dumps(value))
     elif len(sys.argv) == 3 and sys.argv[1] == "check":
         print(",".join(map(str, parse_task_list(sys.argv[2], tasks()))))
     elif len(sys.argv) in (5, 6) and sys.argv[1] == "sample" and sys.argv[3].isdigit():

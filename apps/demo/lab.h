@@ -68,6 +68,10 @@ struct Warp {
 
 // Every warp, in task order, the recitation's examples first.
 const std::vector<Warp>& allWarps();
+// Every task's warps, in task order: each tasks/NN-name/lab_warps.cpp defines
+// add<Name>Warps (tasks/01-camera-rays: addCameraRaysWarps), and CMake
+// generates this function, which calls them (apps/CMakeLists.txt).
+void addTaskWarps(std::vector<Warp>& warps);
 const Warp* findWarp(const std::string& name);
 
 // The common parameters every warp has, then its own.

@@ -23,30 +23,8 @@ constexpr const char* kIntegratorNames[] = {"path (tasks 4-8)",       "direct (t
                                             "mis (task 9, power)",    "mis-balance (task 9)",
                                             "light (task 9, alone)", "bsdf (task 9, alone)"};
 static_assert(std::size(kIntegrators) == std::size(kIntegratorNames));
-constexpr const char* kTaskTitles[] = {"", "Camera rays", "Intersection", "BVH", "Direct lighting",
-                                       "Path tracing", "Mirror & glass", "Environment", "Rough materials",
-                                       "Multiple importance sampling", "Thin lens",
-                                       "Adaptive sampling", "Participating media"};
-constexpr const char* kTabNames[] = {"", "1 Camera", "2 Hits", "3 BVH", "4 Direct", "5 Paths", "6 Mirror/glass",
-                                     "7 Environment", "8 Rough", "9 MIS", "10 Lens", "11 Adaptive", "12 Media"};
-static_assert(std::size(kTaskTitles) == kTaskCount + 1 && std::size(kTabNames) == kTaskCount + 1,
-              "a title and a tab name for every task folder (core/task_list.h)");
 constexpr int kInspectedSamples = 16;
-constexpr int kLabTab = kTaskCount + 1;  // after the tasks' panels
 const ImVec4 kWarning(1.0f, 0.45f, 0.35f, 1.0f), kGood(0.5f, 0.9f, 0.5f, 1.0f), kDim(0.65f, 0.65f, 0.65f, 1.0f);
-
-// The views of every task, made once: panels keep pointers into it.
-const std::vector<DebugView>& views() {
-  static const std::vector<DebugView> all = allDebugViews();
-  return all;
-}
-
-std::vector<const DebugView*> viewsOfTask(int task) {
-  std::vector<const DebugView*> result;
-  for (const DebugView& view : views())
-    if (view.task == task) result.push_back(&view);
-  return result;
-}
 
 std::vector<TodoReached> todosOfTask(int task) {
   std::vector<TodoReached> result;
@@ -56,6 +34,19 @@ std::vector<TodoReached> todosOfTask(int task) {
     if (todo.tag.rfind(prefix, 0) == 0) result.push_back(todo);
   return result;
 }
+
+}  // namespace
+
+// The views of every task, made once: panels keep pointers into it.
+std::vector<const DebugView*> viewsOfTask(int task) {
+  static const std::vector<DebugView> all = allDebugViews();
+  std::vector<const DebugView*> result;
+  for (const DebugView& view : all)
+    if (view.task == task) result.push_back(&view);
+  return result;
+}
+
+namespace {
 
 // Where an image of `size` pixels lands when fitted into `available`
 // keeping its aspect ratio.
@@ -126,7 +117,7 @@ App::App(Scene scene, AppOptions options)
     const int task = std::atoi(entry.c_str());
     if (task >= 1 && task <= kTaskCount) studentTask_[size_t(task)] = entry.find("student") != std::string::npos;
   }
-  if (options_.panel >= 1 && options_.panel <= kTaskCount) requestedTab_ = options_.panel;
+  if (options_.panel >= 1 && options_.panel <= kTaskCount) selectedTab_ = options_.panel;
   restartRender();
   inspect(IVec2(width_ / 2, height_ / 2));  // the pixel the views inspect until one is clicked
 }
@@ -185,7 +176,7 @@ void App::inspect(IVec2 pixel) {
 }
 
 bool App::panelSettled() const {
-  if (selectedTab_ == kLabTab) return lab_.settled();
+  if (selectedTab_ == kLabPanel) return lab_.settled();
   const std::vector<const DebugView*> panelViews = viewsOfTask(selectedTab_);
   return panelViews.empty() ||
          (shownKey_ == viewKey(*panelViews[size_t(selectedView_[size_t(selectedTab_)])]) && viewWorker_.idle());
@@ -263,32 +254,48 @@ void App::drawSidePanel(float x, float width, float height) {
   ImGui::Begin("PathLab debugger", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   drawSettings();
-  if (ImGui::BeginTabBar("panels")) {
-    for (int tab = 1; tab <= kTaskCount; ++tab) {
-      const ImGuiTabItemFlags flags = requestedTab_ == tab ? ImGuiTabItemFlags_SetSelected : 0;
-      char label[64];
-      // ### keeps the tab's identity while its label changes.
-      std::snprintf(label, sizeof label, "%s%s###task%d", kTabNames[tab], todosOfTask(tab).empty() ? "" : " (TODO)", tab);
-      if (ImGui::BeginTabItem(label, nullptr, flags)) {
-        if (requestedTab_ < 0) selectedTab_ = tab;  // ImGui switches tabs a frame after the request
-        ImGui::BeginChild("panel", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
-        drawTaskPanel(tab);
-        ImGui::EndChild();
-        ImGui::EndTabItem();
+  drawPanelSelector();
+  ImGui::Separator();
+  ImGui::BeginChild("panel", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
+  if (selectedTab_ == kLabPanel) {
+    lab_.draw();
+  } else {
+    drawTaskPanel(selectedTab_);
+  }
+  ImGui::EndChild();
+  ImGui::End();
+}
+
+// One button per task and the lab's, wrapped into as many rows as the panel's
+// width needs, so every label stays whole however many tasks there are. A task
+// with a TODO left is marked; one the course does not hand out is dimmed.
+void App::drawPanelSelector() {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  for (int tab = 1; tab <= kLabPanel; ++tab) {
+    char label[64];
+    const bool todo = tab != kLabPanel && !todosOfTask(tab).empty();
+    if (tab == kLabPanel) {
+      std::snprintf(label, sizeof label, "Lab###panel-lab");
+    } else {
+      std::snprintf(label, sizeof label, "%d %s%s###panel%d", tab, kTaskLabels[tab], todo ? " (TODO)" : "", tab);
+    }
+    const float width = ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * style.FramePadding.x;
+    if (tab > 1 && ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
+    const bool selected = tab == selectedTab_, dim = tab != kLabPanel && !kTaskHandedOut[tab];
+    ImGui::PushStyleColor(ImGuiCol_Button, style.Colors[selected ? ImGuiCol_ButtonActive : ImGuiCol_FrameBg]);
+    ImGui::PushStyleColor(ImGuiCol_Text, todo ? kWarning : dim ? kDim : style.Colors[ImGuiCol_Text]);
+    if (ImGui::Button(label)) selectedTab_ = tab;
+    ImGui::PopStyleColor(2);
+    if (ImGui::IsItemHovered()) {
+      if (tab == kLabPanel) {
+        ImGui::SetTooltip("The sampling lab: every warp against its pdf");
+      } else {
+        ImGui::SetTooltip("Task %d: %s%s%s", tab, kTaskTitles[tab], todo ? "\na TODO is not done yet" : "",
+                          dim ? "\nnot handed out in this course: the reference runs" : "");
       }
     }
-    const ImGuiTabItemFlags labFlags = requestedTab_ == kLabTab ? ImGuiTabItemFlags_SetSelected : 0;
-    if (ImGui::BeginTabItem("Lab###lab", nullptr, labFlags)) {
-      if (requestedTab_ < 0) selectedTab_ = kLabTab;
-      ImGui::BeginChild("panel", ImVec2(0, 0), false);
-      lab_.draw();
-      ImGui::EndChild();
-      ImGui::EndTabItem();
-    }
-    ImGui::EndTabBar();
   }
-  requestedTab_ = -1;
-  ImGui::End();
 }
 
 void App::drawSettings() {
@@ -438,82 +445,6 @@ void App::drawTaskPanel(int task) {
     inspect(IVec2(shown.mousePixel));
   }
   ImGui::TextUnformatted(viewOutput_.report.c_str());
-}
-
-// ---- Script ------------------------------------------------------------------
-
-void App::runScript() {
-  // Settled for a few frames: the window shows the finished state.
-  settledFrames_ = settled() ? settledFrames_ + 1 : 0;
-  panelSettledFrames_ = panelSettled() ? panelSettledFrames_ + 1 : 0;
-  while (scriptPosition_ < options_.script.size()) {
-    if (!runCommand(options_.script[scriptPosition_])) return;
-    ++scriptPosition_;
-    return;  // one command per frame, so the interface draws what it did
-  }
-}
-
-bool App::runCommand(const ScriptCommand& command) {
-  const std::string& verb = command.verb;
-  if (verb == "wait") return settledFrames_ >= 3;
-  if (verb == "wait-spp") return renderStats_.completedSpp >= std::min(spp_, int(command.number(0)));
-  if (verb == "wait-panel") return panelSettledFrames_ >= 3;
-  std::printf("script: %s", verb.c_str());
-  for (const std::string& arg : command.args) std::printf(" %s", arg.c_str());
-  if (verb == "panel") {
-    const int panel = int(command.number(0));
-    if (panel < 1 || panel > kTaskCount) {
-      throw Error("script line " + std::to_string(command.line) + ": panel must be 1.." + std::to_string(kTaskCount));
-    }
-    requestedTab_ = selectedTab_ = panel;
-  } else if (verb == "lab") {
-    if (!lab_.select(command.args[0])) {
-      throw Error("script line " + std::to_string(command.line) + ": the lab has no warp \"" + command.args[0] + "\"");
-    }
-    requestedTab_ = selectedTab_ = kLabTab;
-  } else if (verb == "lab-set") {
-    if (!lab_.set(command.args[0], command.number(1))) {
-      throw Error("script line " + std::to_string(command.line) + ": the warp has no parameter \"" + command.args[0] + "\"");
-    }
-  } else if (verb == "lab-map") {
-    lab_.setEnvironmentMap(command.args[0]);
-  } else if (verb == "lab-verdict") {
-    std::printf(" -> %s", lab_.verdict().c_str());
-  } else if (verb == "view") {
-    const std::vector<const DebugView*> panelViews = viewsOfTask(selectedTab_);
-    auto found = std::find_if(panelViews.begin(), panelViews.end(),
-                              [&](const DebugView* v) { return v->name == command.args[0]; });
-    if (found == panelViews.end()) {
-      throw Error("script line " + std::to_string(command.line) + ": panel " + std::to_string(selectedTab_) +
-                  " has no view \"" + command.args[0] + "\"");
-    }
-    selectedView_[size_t(selectedTab_)] = int(found - panelViews.begin());
-  } else if (verb == "click") {
-    const IVec2 pixel(int(command.number(0)), int(command.number(1)));
-    if (pixel.x < 0 || pixel.y < 0 || pixel.x >= width_ || pixel.y >= height_) {
-      throw Error("script line " + std::to_string(command.line) + ": click: pixel outside the image");
-    }
-    inspect(pixel);
-    std::printf(" -> pixel %d,%d: %zu samples, mean (%.4f, %.4f, %.4f)", pixel.x, pixel.y, inspection_.samples.size(),
-                double(inspection_.mean.x), double(inspection_.mean.y), double(inspection_.mean.z));
-  } else if (verb == "orbit") {
-    camera_ = orbitCamera(camera_, float(command.number(0)), float(command.number(1)));
-    restartRender();
-  } else if (verb == "view-orbit") {
-    viewCamera_ = orbitCamera(viewCamera_.value_or(camera_), float(command.number(0)), float(command.number(1)));
-  } else if (verb == "depth") {
-    depth_ = std::clamp(int(command.number(0)), 0, int(kMaxBvhDepth));
-  } else if (verb == "exposure") {
-    exposure_ = float(command.number(0));
-    if (!renderImage_.pixels.empty()) renderTexture_.upload(renderImage_, exposure_);
-  } else if (verb == "screenshot") {
-    screenshot_ = command.args[0];
-  } else if (verb == "quit") {
-    quit_ = true;
-  }
-  std::printf("\n");
-  std::fflush(stdout);
-  return true;
 }
 
 }  // namespace pathlab::gui

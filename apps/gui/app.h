@@ -3,7 +3,7 @@
 // inspector below it, and on the right the settings and one panel per task. A panel
 // shows its task's debugger views (tasks/NN-name/debugger.cpp), computed in
 // the background from the current scene, camera and inspected pixel; the
-// last tab is the sampling lab (lab_panel.h).
+// last panel is the sampling lab (lab_panel.h).
 #pragma once
 
 #include <array>
@@ -25,8 +25,13 @@
 
 namespace pathlab::gui {
 
+inline constexpr int kLabPanel = kTaskCount + 1;  // the sampling lab's panel, after the tasks'
+
+// A task's debugger views (tasks/NN-name/debugger.cpp), made once: panels keep the pointers.
+std::vector<const DebugView*> viewsOfTask(int task);
+
 struct AppOptions {
-  int panel = 1;                   // open on this task's panel (1..7)
+  int panel = 1;                   // open on this task's panel (1..kTaskCount)
   std::vector<ScriptCommand> script;
   int threads = 0;                 // render threads; 0: all
   std::string taskSummary;         // "1:reference 2:student ...", as the build configured it
@@ -78,6 +83,7 @@ class App : public ShellClient {
   // Right-hand side
   void drawSidePanel(float x, float width, float height);
   void drawSettings();
+  void drawPanelSelector();
   void drawInspector();
   void drawTaskPanel(int task);
   std::string viewKey(const DebugView& view) const;
@@ -109,8 +115,7 @@ class App : public ShellClient {
   std::unique_ptr<const Lights> inspectionLights_;
   bool inspectionStale_ = false;  // the scene changed since inspection_ was traced
 
-  int selectedTab_ = 1;        // the task whose panel is shown (kLabTab: the sampling lab)
-  int requestedTab_ = -1;      // a tab to select programmatically this frame
+  int selectedTab_ = 1;        // the task whose panel is shown (kLabPanel: the sampling lab)
   std::array<int, kTaskCount + 1> selectedView_{};   // by task number ([0] unused)
   int depth_ = 3;
   std::optional<Camera> viewCamera_;

@@ -69,7 +69,7 @@ void LabPanel::recompute() {
 }
 
 void LabPanel::draw() {
-  if (generation_ == 0) recompute();  // the first time the tab is shown
+  if (generation_ == 0) recompute();  // the first time the panel is shown
   if (std::optional<Computed> computed = worker_.take(); computed && computed->generation == generation_) {
     shown_ = std::move(*computed);
     view_.invalidate();

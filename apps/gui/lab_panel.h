@@ -1,4 +1,4 @@
-// The debugger's "Lab" tab: the sampling lab (apps/demo/lab.h) live. Pick a
+// The debugger's "Lab" panel: the sampling lab (apps/demo/lab.h) live. Pick a
 // warp, move its parameters, and the samples, the warped grid, the
 // histogram beside the integrated pdf, their difference and the chi-square
 // verdict are recomputed in the background: the same code as `pathlab lab`
@@ -24,7 +24,7 @@ class LabPanel {
   bool set(const std::string& name, double value);
   // Script: the environment warp on the user's own map (empty: the built-in maps).
   void setEnvironmentMap(const std::string& path);
-  // Script: what the tab shows now, as a line: "annulus: ACCEPTED, p = 0.824".
+  // Script: what the panel shows now, as a line: "annulus: ACCEPTED, p = 0.824".
   std::string verdict() const;
 
  private:

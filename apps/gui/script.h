@@ -9,7 +9,7 @@
 //   exposure -1        display exposure in stops
 //   wait               until the render and the panel are finished
 //   wait-spp 8         until the render has 8 samples per pixel
-//   lab environment    show the sampling lab's tab, on that warp
+//   lab environment    show the sampling lab's panel, on that warp
 //   lab-set map 3      set one of the warp's parameters
 //   lab-map F.exr      the environment warp on a map file
 //   lab-verdict        prints what the lab shows: "WARP: ACCEPTED, p = ..." (after wait-panel)

@@ -76,7 +76,7 @@ class EnvironmentLight {
   // The map's pixel value along w (a constant sky: its colour), what lighting integrates.
   Color pixelRadiance(const Vec3& w) const;
   std::optional<EnvironmentLightSample> sample(Vec2 u) const;
-  float pdf(const Vec3& w) const;
+  float pdf(const Vec3& w) const;  // the density sample() draws w with, per unit solid angle
   bool hasMap() const { return environment_->image.width > 0; }
 
  private:

@@ -31,18 +31,7 @@ void markInspectedPixel(Image& image, const DebugViewRequest& request) {
 
 std::vector<DebugView> allDebugViews() {
   std::vector<DebugView> views;
-  addCameraRayViews(views);
-  addIntersectionViews(views);
-  addBvhViews(views);
-  addDirectLightingViews(views);
-  addPathTracingViews(views);
-  addMirrorGlassViews(views);
-  addEnvironmentViews(views);
-  addMicrofacetViews(views);
-  addMisViews(views);
-  addThinLensViews(views);
-  addAdaptiveSamplingViews(views);
-  addMediaViews(views);
+  addTaskDebugViews(views);
   return views;
 }
 

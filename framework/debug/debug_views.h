@@ -71,18 +71,9 @@ DebugOutput bsdfLobeView(const DebugViewRequest& request);
 // Every view of every task, in task order.
 std::vector<DebugView> allDebugViews();
 
-// Each task's debugger.cpp provides one of these.
-void addCameraRayViews(std::vector<DebugView>& views);     // tasks/01-camera-rays/debugger.cpp
-void addIntersectionViews(std::vector<DebugView>& views);  // tasks/02-intersection/debugger.cpp
-void addBvhViews(std::vector<DebugView>& views);           // tasks/03-bvh/debugger.cpp
-void addDirectLightingViews(std::vector<DebugView>& views); // tasks/04-direct-lighting/debugger.cpp
-void addPathTracingViews(std::vector<DebugView>& views);    // tasks/05-path-tracing/debugger.cpp
-void addMirrorGlassViews(std::vector<DebugView>& views);    // tasks/06-mirror-glass/debugger.cpp
-void addEnvironmentViews(std::vector<DebugView>& views);    // tasks/07-environment/debugger.cpp
-void addMicrofacetViews(std::vector<DebugView>& views);     // tasks/08-microfacet/debugger.cpp
-void addMisViews(std::vector<DebugView>& views);            // tasks/09-mis/debugger.cpp
-void addThinLensViews(std::vector<DebugView>& views);     // tasks/10-thin-lens/debugger.cpp
-void addAdaptiveSamplingViews(std::vector<DebugView>& views);  // tasks/11-adaptive-sampling/debugger.cpp
-void addMediaViews(std::vector<DebugView>& views);  // tasks/12-media/debugger.cpp
+// Every task's views, in task order: each task's debugger.cpp defines
+// add<Name>Views (tasks/01-camera-rays/debugger.cpp: addCameraRaysViews), and
+// CMake generates this function, which calls them (framework/CMakeLists.txt).
+void addTaskDebugViews(std::vector<DebugView>& views);
 
 }  // namespace pathlab

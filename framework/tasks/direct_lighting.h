@@ -34,7 +34,7 @@ std::optional<LightDirection> lightDirection(const Point3& from, const AreaSampl
 
 // T4.4: the radiance reflected towards wo at `hit` by light arriving straight
 // from the lights (no bounces), with shadows: one sample per point light,
-// context.settings.lightSamples samples per area light.
+// context.settings.lightSamples samples per area light and of the environment.
 Color estimateDirectLighting(TraceContext& context, const Hit& hit, const Bsdf& bsdf, const Vec3& wo,
                              Sampler& sampler);
 

@@ -52,7 +52,8 @@ struct ScatteringVertex {
 // T12.3: the fraction of light that crosses the media along `ray` (unit
 // direction) from its origin, in `medium`, to `distance`: through each
 // interface surface (a medium's index-matched boundary, which changes the
-// medium as the ray crosses it), 0 at any other surface. Any estimator whose
+// medium as the ray crosses it; past one, the walk goes on from an origin
+// offset beyond it, for the rest of the way), 0 at any other surface. Any estimator whose
 // expected value is that fraction will do; the sampler is there for one that
 // needs random numbers.
 float transmittance(TraceContext& context, Ray ray, float distance, MediumIndex medium, Sampler& sampler);

@@ -67,7 +67,7 @@ DebugOutput samplesView(const DebugViewRequest& request) {
 
 }  // namespace
 
-void addCameraRayViews(std::vector<DebugView>& views) {
+void addCameraRaysViews(std::vector<DebugView>& views) {
   views.push_back({1, "directions", "camera ray direction per pixel as colour 0.5 + 0.5 d", directionsView,
                    kCameraImage});
   views.push_back({1, "samples", "sample positions in the inspected pixel and its neighbours (red: outside)",

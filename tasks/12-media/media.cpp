@@ -153,7 +153,7 @@ Color estimateDirectLightingInMedia(TraceContext& context, const ScatteringVerte
 //      medium is scene.mediumAcross(hit, wi, medium) too.
 // Emission and the environment are counted as task 5 counts them: only
 // where no direct-lighting estimate already did (the camera ray, and after
-// mirror, glass, or interfaces).
+// mirror or glass); an interface leaves that as it was before it.
 //
 // PITFALL: in a medium that absorbs nothing (albedo 1) under a uniform sky
 // of radiance 1, every path must return 1 on average, however often it

@@ -8,6 +8,7 @@ this check. A file's layer is its folder, so a new file needs no entry
 anywhere:
   framework/LAYER/*                  LAYER
   tasks/NN-name/debugger.cpp         debug (a task's debugger is a view)
+  tasks/NN-name/lab_warps.cpp        on top (its warps in the sampling lab, apps/demo/)
   tasks/NN-name/*.cpp, solutions/, tests/mutants/, tests/alternates/
                                      tasks (task files)
   apps/, tests/                      on top: may include any layer
@@ -74,7 +75,7 @@ def layer_of_file(rel: str, layers) -> str:
                              "framework/CMakeLists.txt (pathlab_add_layer) or move its files into one")
         return parts[1]
     if parts[0] == "tasks":
-        return "debug" if parts[-1] == "debugger.cpp" else "tasks"
+        return {"debugger.cpp": "debug", "lab_warps.cpp": TOP}.get(parts[-1], "tasks")
     if parts[0] == "solutions" or parts[:2] in (["tests", "mutants"], ["tests", "alternates"]):
         return "tasks"
     return TOP

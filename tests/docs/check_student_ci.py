@@ -80,15 +80,18 @@ def check(repo, workflow, setup, release_script):
 
 
 def check_vscode(repo, presets):
-    """.vscode/launch.json debugs what the student preset builds, for every task."""
+    """.vscode/launch.json debugs what the student preset builds, for every task that has a suite."""
     problems = []
     student = next(p for p in presets["configurePresets"] if p["name"] == "student")
     build = student["binaryDir"].replace("${sourceDir}", "${workspaceFolder}")
     launch = json.loads((repo / ".vscode/launch.json").read_text())
-    tasks = sorted(d.name for d in (repo / "tasks").glob("[0-9][0-9]-*") if d.is_dir())
+    sys.path.insert(0, str(repo / "tools"))
+    import pathlab_tasks
+    every = pathlab_tasks.tasks(repo)
+    tasks = [every[n][0] for n in pathlab_tasks.handed_out(repo)]  # the suites there are (a release: its course's)
     options = [i.get("options") for i in launch.get("inputs", []) if i.get("id") == "task"]
     if options != [tasks]:
-        problems.append(f".vscode/launch.json: the task list {options} is not tasks/' folders {tasks}")
+        problems.append(f".vscode/launch.json: the task list {options} is not the suites' tasks {tasks}")
     programs = [c["program"] for c in launch["configurations"]]
     if f"{build}/tests/test-${{input:task}}" not in programs or f"{build}/pathlab" not in programs:
         problems.append(f".vscode/launch.json: programs {programs} are not the student build's suite and renderer")

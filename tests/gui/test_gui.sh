@@ -121,7 +121,7 @@ while read -r warp tag _; do
     continue
   fi
   grep -q "script: lab-verdict -> $warp: ACCEPTED" "$out/session.log" ||
-    fail "the lab tab with every default does not show $warp ACCEPTED: $(grep "lab-verdict -> $warp:" "$out/session.log")"
+    fail "the lab panel with every default does not show $warp ACCEPTED: $(grep "lab-verdict -> $warp:" "$out/session.log")"
 done < <("$build/pathlab" lab --list)
 grep -q "no-such-map.exr: cannot open" "$out/session.err" || fail "a missing map file in the lab was not reported"
 for f in panel1 paths-front paths-side lab lab-mistake lab-map; do
@@ -135,7 +135,7 @@ d=$(differ "$out/panel1.png" "$out/paths-front.png" $pixels)
 expect "switching panel 1 -> 5 changed the window ($d of the pixels)" "$d > 0.05"
 check_todo_lines "$out/session.err" "scripted session"
 d=$(differ "$out/paths-side.png" "$out/lab.png" $pixels)
-expect "the sampling lab's tab changed the window ($d of the pixels)" "$d > 0.05"
+expect "the sampling lab's panel changed the window ($d of the pixels)" "$d > 0.05"
 d=$(differ "$out/lab.png" "$out/lab-mistake.png" $pixels)
 expect "another warp, with its mistake, redrew the lab ($d of the pixels)" "$d > 0.02"
 d=$(differ "$out/lab-mistake.png" "$out/lab-map.png" $pixels)

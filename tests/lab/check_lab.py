@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The sampling lab, headless, judged on what it must accept and reject.
 
-  check_lab.py PATHLAB TESTS_BUILD_DIR CASES
+  check_lab.py PATHLAB TESTS_BUILD_DIR TESTS_SOURCE_DIR
 
 Each verdict is taken under seeds 1, 2, 3 (independent samples): a correct
 warp must be ACCEPTED under at least two (a correct warp is rejected in
@@ -18,7 +18,7 @@ all three.
    Jacobian, the hemisphere without sin theta, blocks that do not sum to 1,
    light triangles chosen by count or points without sqrt, a sphere light
    uniform in theta): rejected.
-3. Every case of CASES: the pathlab-lab program linked with that task file
+3. Every case of each task's TESTS_SOURCE_DIR/NN-name/lab_cases.txt: the pathlab-lab program linked with that task file
    (TESTS_BUILD_DIR/pathlab-lab-KIND-NN-name-FILE; KIND tasks: the stub)
    gives the verdict listed, without crashing.
 4. What a user sees first: every warp with every default (no --set) on the
@@ -96,7 +96,7 @@ def judged(want, seen):
 
 
 def main() -> int:
-    pathlab, build, cases = Path(sys.argv[1]), Path(sys.argv[2]), Path(sys.argv[3])
+    pathlab, build, tests = Path(sys.argv[1]), Path(sys.argv[2]), Path(sys.argv[3])
     failures = []
     listing = subprocess.run([str(pathlab), "lab", "--list"], capture_output=True, text=True, check=True).stdout
     warps = [line.split()[0] for line in listing.splitlines() if line.strip()]
@@ -141,7 +141,11 @@ def main() -> int:
             if not judged("reject", seen):
                 failures.append(f"{warp} {settings}: {seen}\n{out}")
 
-    for line in cases.read_text().splitlines():
+    case_lines = [line for cases in sorted(tests.glob("[0-9][0-9]-*/lab_cases.txt"))
+                  for line in cases.read_text().splitlines()]
+    if not case_lines:
+        failures.append(f"no lab case in {tests}/NN-name/lab_cases.txt")
+    for line in case_lines:
         if not line.startswith(("mutants/", "alternates/", "tasks/")):
             continue
         fields = line.split()

@@ -1,0 +1,188 @@
+"""C++ source as tools/mutate reads it: a lexer just good enough to find
+mutation sites (comments, strings and preprocessor lines are never
+mutated), brackets matched, statements and function bodies found."""
+import re
+from dataclasses import dataclass
+
+
+# ---------------------------------------------------------------------------
+# A C++ lexer just good enough to find mutation sites: comments, strings and
+# preprocessor lines are never mutated.
+
+TOKEN = re.compile(r"""
+    (?P<space>\s+)
+  | (?P<comment>//[^\n]*|/\*.*?\*/)
+  | (?P<preprocessor>^[ \t]*\#[^\n]*(?:\\\n[^\n]*)*)
+  | (?P<string>"(?:\\.|[^"\\\n])*"|'(?:\\.|[^'\\\n])*')
+  | (?P<number>0[xX][0-9a-fA-F.]+(?:[pP][+-]?\d+)?[fFlLuU]*|(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?[fFlLuU]*)
+  | (?P<name>[A-Za-z_]\w*)
+  | (?P<op><<=|>>=|->\*|\.\.\.|::|->|\+\+|--|<<|>>|<=|>=|==|!=|&&|\|\||\+=|-=|\*=|/=|%=|&=|\|=|\^=|[-+*/%<>=!&|^~?:;,.(){}\[\]])
+""", re.S | re.M | re.X)
+
+
+@dataclass
+class Token:
+    kind: str
+    text: str
+    start: int
+    end: int
+
+
+def lex(source: str):
+    tokens, position = [], 0
+    while position < len(source):
+        match = TOKEN.match(source, position)
+        if not match:
+            raise SystemExit(f"tools/mutate: cannot read the source at offset {position}: {source[position:position + 40]!r}")
+        if match.lastgroup not in ("space", "comment", "preprocessor"):
+            tokens.append(Token(match.lastgroup, match.group(), match.start(), match.end()))
+        position = match.end()
+    return tokens
+
+
+VALUE_TOKENS = ("name", "number", "string")
+
+
+CONTROL = {"if", "while", "for", "switch", "return", "sizeof", "alignof", "decltype", "static_assert", "catch"}
+
+
+def match_brackets(tokens):
+    """{index of an opening bracket: index of its closing one} and back."""
+    pairs, stack = {}, []
+    for i, t in enumerate(tokens):
+        if t.text in "([{":
+            stack.append(i)
+        elif t.text in ")]}" and stack:
+            j = stack.pop()
+            pairs[j], pairs[i] = i, j
+    return pairs
+
+
+def template_brackets(tokens):
+    """Indices of < and > that bracket template arguments (never mutated)."""
+    angle = set()
+    for i, t in enumerate(tokens):
+        if t.text != "<" or i == 0 or tokens[i - 1].kind != "name":
+            continue
+        depth, j = 1, i + 1
+        while j < len(tokens) and depth > 0:
+            text = tokens[j].text
+            if text == "<":
+                depth += 1
+            elif text == ">":
+                depth -= 1
+            elif text == ">>":
+                depth -= 2
+            elif tokens[j].kind not in ("name", "number") and text not in ("::", ",", "*", "&", "const"):
+                break
+            j += 1
+        if depth <= 0:
+            angle.update({i, j - 1})
+    return angle
+
+
+def code_tokens(tokens, pairs):
+    """Indices of tokens inside a function body (where statements live)."""
+    inside, stack = set(), []
+    for i, t in enumerate(tokens):
+        if t.text == "{":
+            before = tokens[i - 1].text if i else ""
+            stack.append(bool(stack and stack[-1]) or before in (")", "const", "noexcept", "mutable", "override", "else"))
+        elif t.text == "}" and stack:
+            stack.pop()
+        if stack and stack[-1]:
+            inside.add(i)
+    return inside
+
+
+def ordinal(k: int) -> str:
+    return {1: "1st", 2: "2nd", 3: "3rd"}.get(k, f"{k}th")
+
+
+def statement_end(tokens, i, pairs):
+    """Index of the ; ending the statement that starts at token i (paren depth 0)."""
+    j = i
+    while j < len(tokens):
+        text = tokens[j].text
+        if text in "([{" and j in pairs:
+            j = pairs[j] + 1
+            continue
+        if text == ";":
+            return j
+        if text == "}":
+            return None
+        j += 1
+    return None
+
+
+TYPE_WORDS = {"const", "constexpr", "static", "inline", "&", "&&", "*", "[[nodiscard]]"}
+
+
+def plain_type(parts):
+    """A declared type without const, references or pointers: 'const Vec3&' -> 'Vec3'."""
+    return " ".join(p for p in parts if p not in TYPE_WORDS)
+
+
+def declared_functions(source):
+    """{name: (return type, (parameter types))} of the functions declared or defined at namespace level."""
+    tokens = lex(source)
+    pairs = match_brackets(tokens)
+    code = code_tokens(tokens, pairs)
+    found = {}
+    for i, t in enumerate(tokens):
+        if t.text != "(" or i not in pairs or i < 2 or tokens[i - 1].kind != "name" or i in code:
+            continue
+        close = pairs[i]
+        after = close + 1
+        while after < len(tokens) and tokens[after].text in ("const", "noexcept", "override"):
+            after += 1
+        if after >= len(tokens) or tokens[after].text not in (";", "{"):
+            continue
+        j = i - 2  # the return type: back to the previous declaration's end
+        while j >= 0 and tokens[j].text not in (";", "}", "{", ")", ":", "public", "private") and tokens[j].kind != "string":
+            j -= 1
+        returns = plain_type(x.text for x in tokens[j + 1:i - 1])
+        if not returns or returns in ("return", "else", "new") or "=" in returns:
+            continue
+        params, begin, k = [], i + 1, i + 1
+        while k <= close:
+            if k < close and tokens[k].text in "([{<" and k in pairs:
+                k = pairs[k] + 1
+                continue
+            if k == close or tokens[k].text == ",":
+                part = [x.text for x in tokens[begin:k]]
+                if "=" in part:
+                    part = part[:part.index("=")]
+                if len(part) >= 2 and tokens[k - 1].kind == "name":
+                    part = part[:-1]  # the parameter's name
+                if part:
+                    params.append(plain_type(part))
+                begin = k + 1
+            k += 1
+        found.setdefault(tokens[i - 1].text, (returns, tuple(params)))
+    return found
+
+
+def function_bodies(tokens, pairs, code):
+    """(name, [(type, parameter)], body's {, body's }) of each function defined at namespace level."""
+    for i, t in enumerate(tokens):
+        if t.text != "(" or i not in pairs or i == 0 or tokens[i - 1].kind != "name" or i in code:
+            continue
+        close = pairs[i]
+        j = close + 1
+        while j < len(tokens) and tokens[j].text in ("const", "noexcept", "override"):
+            j += 1
+        if j >= len(tokens) or tokens[j].text != "{" or j not in pairs:
+            continue
+        params, begin, k = [], i + 1, i + 1
+        while k <= close:
+            if k < close and tokens[k].text in "([{<" and k in pairs:
+                k = pairs[k] + 1
+                continue
+            if k == close or tokens[k].text == ",":
+                part = tokens[begin:k]
+                if len(part) >= 2 and part[-1].kind == "name":
+                    params.append((" ".join(x.text for x in part[:-1]), part[-1].text))
+                begin = k + 1
+            k += 1
+        yield tokens[i - 1].text, params, j, pairs[j]
