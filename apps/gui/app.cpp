@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <sstream>
 
 #include "core/camera.h"
@@ -272,6 +273,8 @@ void App::drawSidePanel(float x, float width, float height) {
 void App::drawPanelSelector() {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  selectorLabels_.clear();
+  selectorRows_ = 1, selectorCut_ = 0;
   for (int tab = 1; tab <= kLabPanel; ++tab) {
     char label[64];
     const bool todo = tab != kLabPanel && !todosOfTask(tab).empty();
@@ -281,12 +284,18 @@ void App::drawPanelSelector() {
       std::snprintf(label, sizeof label, "%d %s%s###panel%d", tab, kTaskLabels[tab], todo ? " (TODO)" : "", tab);
     }
     const float width = ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * style.FramePadding.x;
-    if (tab > 1 && ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
+    if (tab > 1 && ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) {
+      ImGui::SameLine();
+    } else if (tab > 1) {
+      ++selectorRows_;
+    }
     const bool selected = tab == selectedTab_, dim = tab != kLabPanel && !kTaskHandedOut[tab];
     ImGui::PushStyleColor(ImGuiCol_Button, style.Colors[selected ? ImGuiCol_ButtonActive : ImGuiCol_FrameBg]);
     ImGui::PushStyleColor(ImGuiCol_Text, todo ? kWarning : dim ? kDim : style.Colors[ImGuiCol_Text]);
     if (ImGui::Button(label)) selectedTab_ = tab;
     ImGui::PopStyleColor(2);
+    selectorLabels_.emplace_back(label, std::strcspn(label, "#"));
+    if (ImGui::GetItemRectMax().x > right + 0.5f) ++selectorCut_;
     if (ImGui::IsItemHovered()) {
       if (tab == kLabPanel) {
         ImGui::SetTooltip("The sampling lab: every warp against its pdf");

@@ -84,6 +84,9 @@ class App : public ShellClient {
   void drawSidePanel(float x, float width, float height);
   void drawSettings();
   void drawPanelSelector();
+  // The panel buttons as last drawn (the script's `panels`): their labels, rows, and any cut by the window's edge.
+  std::vector<std::string> selectorLabels_;
+  int selectorRows_ = 0, selectorCut_ = 0;
   void drawInspector();
   void drawTaskPanel(int task);
   std::string viewKey(const DebugView& view) const;

@@ -43,6 +43,9 @@ bool App::runCommand(const ScriptCommand& command) {
     }
   } else if (verb == "lab-map") {
     lab_.setEnvironmentMap(command.args[0]);
+  } else if (verb == "panels") {
+    std::printf(" -> %zu buttons in %d rows, %d cut:", selectorLabels_.size(), selectorRows_, selectorCut_);
+    for (size_t i = 0; i < selectorLabels_.size(); ++i) std::printf("%s%s", i ? " | " : " ", selectorLabels_[i].c_str());
   } else if (verb == "lab-verdict") {
     std::printf(" -> %s", lab_.verdict().c_str());
   } else if (verb == "view") {

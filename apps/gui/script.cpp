@@ -11,7 +11,7 @@ std::vector<ScriptCommand> parseScript(const std::string& text, const std::strin
   static const std::map<std::string, size_t> arity = {
       {"panel", 1},  {"view", 1},     {"click", 2},      {"orbit", 2}, {"view-orbit", 2}, {"depth", 1},
       {"exposure", 1}, {"wait", 0},   {"wait-spp", 1}, {"wait-panel", 0},   {"screenshot", 1}, {"quit", 0},
-      {"lab", 1},      {"lab-set", 2},  {"lab-map", 1}, {"lab-verdict", 0}};
+      {"lab", 1},      {"lab-set", 2},  {"lab-map", 1}, {"lab-verdict", 0}, {"panels", 0}};
   std::vector<ScriptCommand> commands;
   std::istringstream lines(text);
   std::string line;

@@ -14,6 +14,7 @@
 //   lab-map F.exr      the environment warp on a map file
 //   lab-verdict        prints what the lab shows: "WARP: ACCEPTED, p = ..." (after wait-panel)
 //   wait-panel         until the panel's view (or the lab's test) is computed
+//   panels             prints the panel buttons as last drawn: "N buttons in R rows, K cut: 1 Camera | ..."
 //   screenshot F.png   save the window
 //   quit
 // Blank lines and lines starting with # are skipped.

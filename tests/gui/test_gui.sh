@@ -70,6 +70,7 @@ cat > "$out/session.txt" << 'SCRIPT'
 panel 1
 wait
 screenshot OUT/panel1.png
+panels
 click 140 200
 panel 5
 view paths
@@ -110,6 +111,16 @@ if ! xrun "$gui" --script "$out/session.txt" --timeout 300 > "$out/session.log" 
   fail "scripted session exited with $?"; cat "$out/session.err"
 fi
 grep -q "click 140 200 -> pixel 140,200: 16 samples" "$out/session.log" || fail "the click was not inspected"
+# The panel buttons: one per task and the lab's, none cut by the window's
+# edge, each labelled with its number and task.json's label.
+panels=$(grep "^script: panels -> " "$out/session.log")
+count=$(python3 -c 'import sys; sys.path.insert(0, sys.argv[1]); import pathlab_tasks; print(len(pathlab_tasks.tasks()))'           "$root/tools")
+[[ $panels == *" -> $((count + 1)) buttons in "*" rows, 0 cut: "* ]] ||
+  fail "the panel buttons are not one per task and the lab, all whole: $panels"
+for ((n = 1; n <= count; ++n)); do
+  label=$(python3 "$root/tools/pathlab_tasks.py" manifest "$n" label)
+  [[ $panels == *": $n $label"* || $panels == *"| $n $label"* ]] || fail "no whole button \"$n $label\": $panels"
+done
 # A warp that runs a task's routine (lab --list's second column: T<n>...)
 # is ACCEPTED by default once that task is done (a student release's stubs
 # are rejected, rightly); the seed warps are the framework's own.
