@@ -1,0 +1,36 @@
+"""Task 7's seeded mutants and alternates: edits of its reference,
+solutions/07-environment/environment.cpp, that tests/mutants/generate.py writes into
+tests/mutants/07-environment/ and tests/alternates/07-environment/. A mutant is one
+realistic mistake and must lose points in the task's suite; an alternate is
+a correct solution written differently and must score full marks (CTest
+label "validity"). Each entry: (name, description, [(old, new), ...]), old
+a piece of the reference and new what replaces it. Not in the student
+release: the pieces are the reference's own lines."""
+
+MUTANTS = [
+    ("pdf-without-sin-theta", "the solid-angle pdf without the sin(theta) Jacobian",
+     [("  return EnvironmentSample{equirectToDirection(uv), pdfUv / (2.0f * kPi * kPi * sinTheta)};",
+       "  return EnvironmentSample{equirectToDirection(uv), pdfUv / (2.0f * kPi * kPi)};"),
+      ("  return pdfUv / (2.0f * kPi * kPi * sinTheta);\n}", "  return pdfUv / (2.0f * kPi * kPi);\n}")]),
+    ("no-seam-wrap", "columns clamped instead of wrapped at the u seam",
+     [("  const int x0 = (int(x0f) % map.width + map.width) % map.width;  // wraps at the u seam\n  const int x1 = (x0 + 1) % map.width;",
+       "  const int x0 = std::clamp(int(x0f), 0, map.width - 1);\n  const int x1 = std::min(x0 + 1, map.width - 1);")]),
+    ("cdf-off-by-one", "the row one past the one the CDF chose",
+     [("  const int j = findInterval(d.marginalCdf.data(), d.height, u.y);", "  const int j = std::min(findInterval(d.marginalCdf.data(), d.height, u.y) + 1, d.height - 1);")]),
+    ("lookup-half-pixel", "bilinear lookup without the half-pixel offset",
+     [("const float x = uv.x * float(map.width) - 0.5f, y = uv.y * float(map.height) - 0.5f;", "const float x = uv.x * float(map.width), y = uv.y * float(map.height);")]),
+    ("hemisphere-not-sphere", "uniform 'sphere' samples only one hemisphere",
+     [("  const float z = 1.0f - 2.0f * u.x;\n  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), z};",
+       "  const float z = u.x;\n  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), z};")]),
+]
+
+ALTERNATES = [
+    ("weights-without-sin-theta", "pixel weights without sin(theta): correct, only noisier (the handout says so)",
+     [("    const double sinTheta = std::sin(std::numbers::pi * (j + 0.5) / map.height);", "    const double sinTheta = 1.0;")]),
+    ("seam-wraps-to-zero", "a u that rounds to 1 at the seam wrapped to 0 (u is periodic: the same meridian)",
+     [("  return {std::min(phi / (2.0f * kPi), 0x1.fffffep-1f), theta / kPi};",
+       "  const float u = phi / (2.0f * kPi);\n  return {u < 1.0f ? u : 0.0f, theta / kPi};")]),
+    ("linear-search", "CDF inversion by linear search",
+     [("  const float* it = std::upper_bound(cdf, cdf + n + 1, x);\n  int i = std::clamp(int(it - cdf) - 1, 0, n - 1);",
+       "  int i = 0;\n  while (i + 1 < n && cdf[i + 1] <= x) ++i;")]),
+]
