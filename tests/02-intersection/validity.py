@@ -1,11 +1,4 @@
-"""Task 2's seeded mutants and alternates: edits of its reference,
-solutions/02-intersection/intersection.cpp, that tests/mutants/generate.py writes into
-tests/mutants/02-intersection/ and tests/alternates/02-intersection/. A mutant is one
-realistic mistake and must lose points in the task's suite; an alternate is
-a correct solution written differently and must score full marks (CTest
-label "validity"). Each entry: (name, description, [(old, new), ...]), old
-a piece of the reference and new what replaces it. Not in the student
-release: the pieces are the reference's own lines."""
+"""Task 2's seeded mutants and alternates (tests/mutants/generate.py says what they are)."""
 
 MUTANTS = [
     ("absolute-det-epsilon", "|det| < 1e-6 rejected (an absolute epsilon)",

@@ -1,11 +1,4 @@
-"""Task 5's seeded mutants and alternates: edits of its reference,
-solutions/05-path-tracing/path_tracing.cpp, that tests/mutants/generate.py writes into
-tests/mutants/05-path-tracing/ and tests/alternates/05-path-tracing/. A mutant is one
-realistic mistake and must lose points in the task's suite; an alternate is
-a correct solution written differently and must score full marks (CTest
-label "validity"). Each entry: (name, description, [(old, new), ...]), old
-a piece of the reference and new what replaces it. Not in the student
-release: the pieces are the reference's own lines."""
+"""Task 5's seeded mutants and alternates (tests/mutants/generate.py says what they are)."""
 
 MUTANTS = [
     ("plus-minus-1e10", "returns +1e10 and -1e10 in turn, tracing nothing: a mean near 0 bought with noise",

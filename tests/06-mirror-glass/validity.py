@@ -1,11 +1,4 @@
-"""Task 6's seeded mutants and alternates: edits of its reference,
-solutions/06-mirror-glass/mirror_glass.cpp, that tests/mutants/generate.py writes into
-tests/mutants/06-mirror-glass/ and tests/alternates/06-mirror-glass/. A mutant is one
-realistic mistake and must lose points in the task's suite; an alternate is
-a correct solution written differently and must score full marks (CTest
-label "validity"). Each entry: (name, description, [(old, new), ...]), old
-a piece of the reference and new what replaces it. Not in the student
-release: the pieces are the reference's own lines."""
+"""Task 6's seeded mutants and alternates (tests/mutants/generate.py says what they are)."""
 
 MUTANTS = [
     ("no-eta-flip", "the index ratio not flipped when leaving the glass",

@@ -1,11 +1,4 @@
-"""Task 7's seeded mutants and alternates: edits of its reference,
-solutions/07-environment/environment.cpp, that tests/mutants/generate.py writes into
-tests/mutants/07-environment/ and tests/alternates/07-environment/. A mutant is one
-realistic mistake and must lose points in the task's suite; an alternate is
-a correct solution written differently and must score full marks (CTest
-label "validity"). Each entry: (name, description, [(old, new), ...]), old
-a piece of the reference and new what replaces it. Not in the student
-release: the pieces are the reference's own lines."""
+"""Task 7's seeded mutants and alternates (tests/mutants/generate.py says what they are)."""
 
 MUTANTS = [
     ("pdf-without-sin-theta", "the solid-angle pdf without the sin(theta) Jacobian",

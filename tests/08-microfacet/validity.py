@@ -1,11 +1,4 @@
-"""Task 8's seeded mutants and alternates: edits of its reference,
-solutions/08-microfacet/microfacet.cpp, that tests/mutants/generate.py writes into
-tests/mutants/08-microfacet/ and tests/alternates/08-microfacet/. A mutant is one
-realistic mistake and must lose points in the task's suite; an alternate is
-a correct solution written differently and must score full marks (CTest
-label "validity"). Each entry: (name, description, [(old, new), ...]), old
-a piece of the reference and new what replaces it. Not in the student
-release: the pieces are the reference's own lines."""
+"""Task 8's seeded mutants and alternates (tests/mutants/generate.py says what they are)."""
 
 MUTANTS = [
     ("missing-jacobian", "the conductor's pdf without the 1 / (4 |wo.m|) of the reflection",

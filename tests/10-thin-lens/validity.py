@@ -1,11 +1,4 @@
-"""Task 10's seeded mutants and alternates: edits of its reference,
-solutions/10-thin-lens/thin_lens.cpp, that tests/mutants/generate.py writes into
-tests/mutants/10-thin-lens/ and tests/alternates/10-thin-lens/. A mutant is one
-realistic mistake and must lose points in the task's suite; an alternate is
-a correct solution written differently and must score full marks (CTest
-label "validity"). Each entry: (name, description, [(old, new), ...]), old
-a piece of the reference and new what replaces it. Not in the student
-release: the pieces are the reference's own lines."""
+"""Task 10's seeded mutants and alternates (tests/mutants/generate.py says what they are)."""
 
 REF_DISK = """  const Vec2 offset = 2.0f * u - Vec2(1.0f);
   if (offset.x == 0.0f && offset.y == 0.0f) return Point2(0.0f);

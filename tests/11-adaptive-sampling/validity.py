@@ -1,11 +1,4 @@
-"""Task 11's seeded mutants and alternates: edits of its reference,
-solutions/11-adaptive-sampling/adaptive_sampling.cpp, that tests/mutants/generate.py writes into
-tests/mutants/11-adaptive-sampling/ and tests/alternates/11-adaptive-sampling/. A mutant is one
-realistic mistake and must lose points in the task's suite; an alternate is
-a correct solution written differently and must score full marks (CTest
-label "validity"). Each entry: (name, description, [(old, new), ...]), old
-a piece of the reference and new what replaces it. Not in the student
-release: the pieces are the reference's own lines."""
+"""Task 11's seeded mutants and alternates (tests/mutants/generate.py says what they are)."""
 
 MUTANTS = [
     ("no-spread-never-stops", "a half-width of 0 taken as not measured yet: a pixel with no spread never stops",

@@ -1,11 +1,4 @@
-"""Task 12's seeded mutants and alternates: edits of its reference,
-solutions/12-media/media.cpp, that tests/mutants/generate.py writes into
-tests/mutants/12-media/ and tests/alternates/12-media/. A mutant is one
-realistic mistake and must lose points in the task's suite; an alternate is
-a correct solution written differently and must score full marks (CTest
-label "validity"). Each entry: (name, description, [(old, new), ...]), old
-a piece of the reference and new what replaces it. Not in the student
-release: the pieces are the reference's own lines."""
+"""Task 12's seeded mutants and alternates (tests/mutants/generate.py says what they are)."""
 
 MUTANTS = [
     ("interface-exits-to-vacuum", "an interface crossed by hand: its interior going in, a vacuum going out (not the scene's medium)",

@@ -5,7 +5,12 @@ realistic mistake and must lose points in its task's suite; an alternate is
 a correct but different solution and must score full points (CTest label
 "validity"; docs/grader-validity.md lists what caught each mutant).
 
-Run after changing a reference file: tests/mutants/generate.py
+Each task's come from its tests/NN-name/validity.py: lists MUTANTS and
+ALTERNATES of (name, description, [(old, new), ...]), old a piece of the
+reference solutions/NN-name/name.cpp and new what replaces it (the pieces
+are the reference's own lines: the student release has none of these files).
+
+Run after changing a reference file or a validity.py: tests/mutants/generate.py
 (--check: write nothing, exit 1 if any file differs from what would be written)."""
 import runpy
 import sys
