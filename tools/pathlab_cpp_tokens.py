@@ -99,6 +99,23 @@ def ordinal(k: int) -> str:
     return {1: "1st", 2: "2nd", 3: "3rd"}.get(k, f"{k}th")
 
 
+def argument_spans(tokens, pairs, open_):
+    """The arguments between bracket `open_` and its match, each (first, last) token index;
+    commas inside nested brackets do not split."""
+    args, begin, j, close = [], open_ + 1, open_ + 1, pairs[open_]
+    while j < close:
+        if tokens[j].text in "([{" and j in pairs:
+            j = pairs[j] + 1
+            continue
+        if tokens[j].text == ",":
+            args.append((begin, j - 1))
+            begin = j + 1
+        j += 1
+    if begin < close:
+        args.append((begin, close - 1))
+    return args
+
+
 def statement_end(tokens, i, pairs):
     """Index of the ; ending the statement that starts at token i (paren depth 0)."""
     j = i

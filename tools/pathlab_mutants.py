@@ -6,7 +6,8 @@ import re
 from dataclasses import dataclass, field
 
 from pathlab_cpp_tokens import (CONTROL, VALUE_TOKENS, code_tokens, declared_functions, function_bodies, lex,
-                                match_brackets, ordinal, plain_type, statement_end, template_brackets)
+                                match_brackets, ordinal, plain_type, statement_end, template_brackets,
+                                argument_spans)
 
 
 @dataclass
@@ -169,17 +170,7 @@ def generate(task: int, folder: str, source: str, header: str = ""):
         # Neighbouring arguments swapped.
         if text in ("(", "{") and i in pairs and i > 0 and \
                 (tokens[i - 1].kind == "name" and tokens[i - 1].text not in CONTROL or tokens[i - 1].text == ">"):
-            close, args, begin, j = pairs[i], [], i + 1, i + 1
-            while j < close:
-                if tokens[j].text in "([{" and j in pairs:
-                    j = pairs[j] + 1
-                    continue
-                if tokens[j].text == ",":
-                    args.append((begin, j - 1))
-                    begin = j + 1
-                j += 1
-            if begin < close:
-                args.append((begin, close - 1))
+            args = argument_spans(tokens, pairs, i)
             for k in range(len(args) - 1):
                 (a0, a1), (b0, b1) = args[k], args[k + 1]
                 first = source[tokens[a0].start:tokens[a1].end]
@@ -272,20 +263,6 @@ def higher_order(tokens, pairs, code, source, visible):
     for name, signature in visible.items():
         by_signature.setdefault(signature, []).append(name)
 
-    def call_args(open_):
-        args, begin, j, close = [], open_ + 1, open_ + 1, pairs[open_]
-        while j < close:
-            if tokens[j].text in "([{" and j in pairs:
-                j = pairs[j] + 1
-                continue
-            if tokens[j].text == ",":
-                args.append((begin, j - 1))
-                begin = j + 1
-            j += 1
-        if begin < close:
-            args.append((begin, close - 1))
-        return args
-
     for i, t in enumerate(tokens):
         if i not in code or t.kind != "name" or i + 1 >= len(tokens) or tokens[i + 1].text != "(" or i + 1 not in pairs:
             continue
@@ -305,7 +282,7 @@ def higher_order(tokens, pairs, code, source, visible):
                     edits.append(("call", t.start, t.end, other, f"`{t.text}` -> `{other}`"))
         # A refinement dropped.
         if qualified and t.text in REFINEMENTS:
-            args = call_args(i + 1)
+            args = argument_spans(tokens, pairs, i + 1)
             keep = None
             if t.text == "normalize" and len(args) == 1 or t.text == "clamp" and len(args) == 3:
                 keep = args[0]
