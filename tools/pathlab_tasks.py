@@ -32,12 +32,14 @@ def tasks(root: Path = ROOT) -> dict:
 
 # tasks/NN-name/task.json: what the tools show of the task, kept with it.
 #   label       the GUI's name for its panel (at most 14 characters)
+#   summary     the task in a few words, lower case ("camera rays"): its row in README.md's task table
+#   contents    what the task's folders hold, the row's last cell ("student file, reference, ...")
 #   writeup     the figures of its write-up section (tools/writeup), in order:
 #               {"kind": "render", "args": pathlab's arguments, "caption": ...} or
 #               {"kind": "view", "args": `pathlab debug --task N`'s further arguments, "caption": ...}
 #   screenshot  its panel in docs/images/gui-panel-<N>.png (tools/make-gui-screenshots):
 #               {"scene": a scene file or "" (the built-in one), "script": pathlab-gui --script lines}
-MANIFEST_KEYS = {"label": str, "writeup": list, "screenshot": dict}
+MANIFEST_KEYS = {"label": str, "summary": str, "contents": str, "writeup": list, "screenshot": dict}
 LABEL_MAX = 14
 
 
@@ -65,6 +67,9 @@ def manifest(number: int, root: Path = ROOT) -> dict:
             raise SystemExit(f"pathlab_tasks: {where}: no '{key}'")
     if not 0 < len(data["label"]) <= LABEL_MAX or '"' in data["label"] or "\\" in data["label"]:
         raise SystemExit(f"pathlab_tasks: {where}: 'label' should be 1 to {LABEL_MAX} characters, no quotes")
+    for key in ("summary", "contents"):  # cells of a Markdown table, on one line
+        if not data[key].strip() or "|" in data[key] or "\n" in data[key]:
+            raise SystemExit(f"pathlab_tasks: {where}: '{key}' should be one line of text, without '|'")
     for i, figure in enumerate(data["writeup"]):
         if not (isinstance(figure, dict) and set(figure) == {"kind", "args", "caption"} and
                 figure["kind"] in ("render", "view") and all(isinstance(figure[k], str) for k in figure)):
@@ -166,8 +171,35 @@ def commit_random(stage: str, root: Path = ROOT) -> random.Random:
 SUBMISSION_FLAGS = ["-D_GLIBCXX_ASSERTIONS"]
 
 
+# README.md's task table: a row per task, from its task.json ("summary",
+# "contents"), in task order. `pathlab_tasks.py readme-table` writes it; CTest task-manifests
+# fails when it is not the task folders'. (A student release rewrites the
+# last cell of the tasks its course withholds: tools/make-student-release.)
+README_TABLE_HEADER = "| task | folder (its README.md is the handout) | status |"
+
+
+def readme_task_table(root: Path = ROOT) -> str:
+    rows = [README_TABLE_HEADER, "| --- | --- | --- |"]
+    for n, (folder, _) in tasks(root).items():
+        data = manifest(n, root)
+        rows.append(f"| {n} {data['summary']} | [`tasks/{folder}/`](tasks/{folder}/README.md) | {data['contents']} |")
+    return "\n".join(rows) + "\n"
+
+
+def readme_with_task_table(text: str, root: Path = ROOT) -> str:
+    """README.md's text with its task table (the header line and the table's lines under it) written anew."""
+    start = text.find("\n" + README_TABLE_HEADER + "\n")
+    if start < 0:
+        raise SystemExit(f"pathlab_tasks: README.md has no task table (a line '{README_TABLE_HEADER}')")
+    start += 1
+    end = start
+    while end < len(text) and text.startswith("|", end):
+        end = text.index("\n", end) + 1
+    return text[:start] + readme_task_table(root) + text[end:]
+
+
 USAGE = ("usage: pathlab_tasks.py core | handed-out | manifest N KEY | check LIST | sample STAGE COUNT VARIABLE [--numbers | --others]"
-         " | draw STAGE COUNT < LINES")
+         " | draw STAGE COUNT < LINES | readme-table")
 
 if __name__ == "__main__":  # for shell scripts
     import sys
@@ -198,5 +230,8 @@ if __name__ == "__main__":  # for shell scripts
         lines = sys.stdin.read().splitlines()
         drawn = set(commit_random(sys.argv[2]).sample(range(len(lines)), min(int(sys.argv[3]), len(lines))))
         print("\n".join(line for i, line in enumerate(lines) if i in drawn))
+    elif sys.argv[1:] == ["readme-table"]:  # README.md's task table written anew from the task folders
+        readme = ROOT / "README.md"
+        readme.write_text(readme_with_task_table(readme.read_text()))
     else:
         raise SystemExit(USAGE)

@@ -16,7 +16,7 @@ the release (no build), and then
     handed out, or its handout keeps "## The recipe" (its maths);
   - the recipes the extension tasks lean on are there whole: task 4's
     shadow-ray contract and task 5's Russian roulette.
-And docs/submitting.md's table of task files is the task list.
+And docs/submitting.md's rule for a task's file holds for every task.
 
 usage: check_release_text.py REPOSITORY [--tasks 5,9 ...]"""
 import re
@@ -100,13 +100,23 @@ def check_subset(repo: Path, subset: str, scratch: Path) -> list:
 
 
 def check_submitting_page(repo: Path) -> list:
-    """docs/submitting.md's table: each task's file and its name, as the task list has them."""
+    """docs/submitting.md's rule for a task's file holds for every task, and its example is a real task's."""
     sys.path.insert(0, str(repo / "tools"))
     import pathlab_tasks
-    rows = re.findall(r"^\| (\d+) \| `tasks/([^/]+)/([^`]+)` \| `([^`]+)` \|$", (repo / "docs" / "submitting.md").read_text(),
-                      re.M)
-    expected = [(str(n), folder, name, name) for n, (folder, name) in sorted(pathlab_tasks.tasks(repo).items())]
-    return [] if rows == expected else [f"docs/submitting.md: its task table is not the task list {expected}"]
+    page = (repo / "docs" / "submitting.md").read_text()
+    problems = []
+    if "`tasks/NN-name/name.cpp`" not in page:
+        problems.append("docs/submitting.md no longer states the rule `tasks/NN-name/name.cpp`")
+    for n, (folder, name) in pathlab_tasks.tasks(repo).items():
+        if name != folder[3:].replace("-", "_") + ".cpp" or not (repo / "tasks" / folder / name).is_file():
+            problems.append(f"docs/submitting.md: task {n}'s file is not tasks/{folder}/{name}, as its rule says")
+    for folder, name, submitted in re.findall(r"`tasks/(\d\d-[a-z0-9-]+)/([\w.]+)`, submitted as\s+`([\w.]+)`", page):
+        if not (repo / "tasks" / folder / name).is_file() or submitted != name:
+            problems.append(f"docs/submitting.md: its example tasks/{folder}/{name} (submitted as {submitted}) "
+                            "is not a task's file")
+    if not re.search(r"`tasks/\d\d-[a-z0-9-]+/[\w.]+`, submitted as", page):
+        problems.append("docs/submitting.md: its example of the rule is gone")
+    return problems
 
 
 def main() -> int:

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """What each task says about itself is well formed and names what exists:
 its handout's title line and tasks/NN-name/task.json (tools/pathlab_tasks.py
-checks the keys and their types), each write-up figure's scene file and, for
-a view, a view that task has (`pathlab debug --list` of this build), and its
+checks the keys and their types), README.md's task table made from them,
+each write-up figure's scene file and, for a view, a view that task has (`pathlab debug --list` of this build), and its
 screenshot's scene and the views its script selects. The GUI and the
 generated C++ take the same names (core/task_list.h), so a task whose
 manifest passes here shows everywhere.
@@ -53,6 +53,12 @@ def main() -> int:
                 problems.append(f"{where}: the screenshot selects view {args!r}, which task {n} does not have")
             if verb in ("panel", "quit", "screenshot"):
                 problems.append(f"{where}: the screenshot's script has '{verb}' (tools/make-gui-screenshots adds it)")
+    # The README's task table is the task folders' (a release rewrites its withheld tasks' rows).
+    if not (root / pathlab_tasks.HANDED_OUT_FILE).exists() and not problems:
+        readme = (root / "README.md").read_text()
+        if pathlab_tasks.readme_with_task_table(readme, root) != readme:
+            problems.append("README.md's task table is not the task folders' summary and contents "
+                            "(python3 tools/pathlab_tasks.py readme-table writes it)")
     for label, tasks in labels.items():
         if len(tasks) > 1:
             problems.append(f"tasks {tasks} share the label {label!r}: the GUI could not tell their panels apart")
