@@ -8,7 +8,7 @@
 //
 // Check your work:
 //   ./build/pathlab debug --task @N@ --view triangle -o triangle.png
-//   ./build/pathlab-lab run @WARP@
+//   ./build/pathlab lab @WARP@ -o @WARP@.png
 //   ctest --test-dir build -R @FOLDER@ --output-on-failure
 #include "tasks/@STEM@.h"
 
