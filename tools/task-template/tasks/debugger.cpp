@@ -37,8 +37,9 @@ DebugOutput triangleView(const DebugViewRequest& request) {
           if (isFinite(Vec3(p, 0.0f))) drawDot(image, triangle0 + size * Point2(p.x, -p.y), 0.8f, color);
         }
     }
-  drawText(image, Point2(4.0f, 4.0f), "U", Color(0.9f));
-  drawText(image, Point2(float(side) + 4.0f, 4.0f), "SAMPLETRIANGLE(U)", Color(0.9f));
+  const int textScale = 8 + 12 * 17 <= side ? 2 : 1;  // the longer label fits its half
+  drawText(image, Point2(4.0f, 4.0f), "U", Color(0.9f), textScale);
+  drawText(image, Point2(float(side) + 4.0f, 4.0f), "SAMPLETRIANGLE(U)", Color(0.9f), textScale);
   const std::string report = std::to_string(kCells * kCells * kPerCell * kPerCell) + " points of u on a grid, " +
                              std::to_string(outside) + " outside the triangle; equal areas of u must cover equal " +
                              "areas of the triangle\n";
