@@ -39,7 +39,9 @@ def tasks(root: Path = ROOT) -> dict:
 #               {"kind": "view", "args": `pathlab debug --task N`'s further arguments, "caption": ...}
 #   screenshot  its panel in docs/images/gui-panel-<N>.png (tools/make-gui-screenshots):
 #               {"scene": a scene file or "" (the built-in one), "script": pathlab-gui --script lines}
-MANIFEST_KEYS = {"label": str, "summary": str, "contents": str, "writeup": list, "screenshot": dict}
+#   ci          the seconds it adds to each of CI's stages ({"test": 45, "asan": 10, ...}): its share of
+#               CI's time budget (.ci/run adds every task's to a stage's base; docs/ci.md)
+MANIFEST_KEYS = {"label": str, "summary": str, "contents": str, "writeup": list, "screenshot": dict, "ci": dict}
 LABEL_MAX = 14
 
 
@@ -75,6 +77,9 @@ def manifest(number: int, root: Path = ROOT) -> dict:
                 figure["kind"] in ("render", "view") and all(isinstance(figure[k], str) for k in figure)):
             raise SystemExit(f"pathlab_tasks: {where}: writeup[{i}] should be "
                              '{"kind": "render" or "view", "args": "...", "caption": "..."}')
+    if not all(re.fullmatch(r"[a-z0-9-]+", stage) and type(seconds) is int and 0 <= seconds <= 3600
+               for stage, seconds in data["ci"].items()):
+        raise SystemExit(f"pathlab_tasks: {where}: ci should be {{\"stage\": seconds, ...}}, whole seconds 0 to 3600")
     shot = data["screenshot"]
     if not (set(shot) == {"scene", "script"} and isinstance(shot["scene"], str) and isinstance(shot["script"], list)
             and all(isinstance(line, str) and "\n" not in line for line in shot["script"])):
@@ -91,6 +96,11 @@ def title(number: int, root: Path = ROOT) -> str:
     if not match:
         raise SystemExit(f"pathlab_tasks: tasks/{folder}/README.md should start \"# Task {number} — Title\"")
     return match.group(1)
+
+
+def ci_allowance(stage: str, root: Path = ROOT) -> int:
+    """The seconds every task's task.json adds to CI's stage `stage` (.ci/run; docs/ci.md)."""
+    return sum(manifest(n, root)["ci"].get(stage, 0) for n in tasks(root))
 
 
 # The seven core tasks (camera rays to environment lighting): what a course
@@ -199,7 +209,7 @@ def readme_with_task_table(text: str, root: Path = ROOT) -> str:
 
 
 USAGE = ("usage: pathlab_tasks.py core | handed-out | manifest N KEY | check LIST | sample STAGE COUNT VARIABLE [--numbers | --others]"
-         " | draw STAGE COUNT < LINES | readme-table")
+         " | draw STAGE COUNT < LINES | readme-table | ci-allowance STAGE")
 
 if __name__ == "__main__":  # for shell scripts
     import sys
@@ -230,6 +240,8 @@ if __name__ == "__main__":  # for shell scripts
         lines = sys.stdin.read().splitlines()
         drawn = set(commit_random(sys.argv[2]).sample(range(len(lines)), min(int(sys.argv[3]), len(lines))))
         print("\n".join(line for i, line in enumerate(lines) if i in drawn))
+    elif len(sys.argv) == 3 and sys.argv[1] == "ci-allowance":  # for .ci/run: the tasks' seconds in a stage
+        print(ci_allowance(sys.argv[2]))
     elif sys.argv[1:] == ["readme-table"]:  # README.md's task table written anew from the task folders
         readme = ROOT / "README.md"
         readme.write_text(readme_with_task_table(readme.read_text()))

@@ -339,13 +339,16 @@ void App::drawSettings() {
   ImGui::PopItemWidth();
   if (changed) restartRender();
 
-  // Which code runs, and what is not done yet.
+  // Which code runs, and what is not done yet: wrapped, so that any number of tasks shows whole.
   ImGui::Text("tasks:");
   for (int task = 1; task <= kTaskCount; ++task) {
-    ImGui::SameLine();
     const bool undone = !todosOfTask(task).empty();
-    ImGui::TextColored(undone ? kWarning : (studentTask_[size_t(task)] ? kGood : kDim), "%d:%s%s", task,
-                       studentTask_[size_t(task)] ? "yours" : "reference", undone ? "(TODO)" : "");
+    char text[48];
+    std::snprintf(text, sizeof text, "%d:%s%s", task, studentTask_[size_t(task)] ? "yours" : "reference",
+                  undone ? "(TODO)" : "");
+    ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize(text).x) ImGui::NewLine();
+    ImGui::TextColored(undone ? kWarning : (studentTask_[size_t(task)] ? kGood : kDim), "%s", text);
   }
 }
 

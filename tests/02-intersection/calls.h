@@ -7,6 +7,11 @@
 #include "core/scene.h"
 #include "tasks/intersection.h"
 
+// This task's own value types on the wire (tests/remote/wire.h).
+namespace pathlab::wire {
+PATHLAB_WIRE_FIELDS(SurfacePoint, s.point, s.geometricNormal, s.shadingNormal);
+}  // namespace pathlab::wire
+
 namespace pathlab::calls {
 PATHLAB_REMOTE_CALL(IntersectTriangle, 1, shape::Fixed, std::optional<TriangleHit>(Ray, Interval, Point3, Point3, Point3));
 PATHLAB_REMOTE_CALL(IntersectSphere, 2, shape::Fixed, std::optional<float>(Ray, Interval, Point3, float));

@@ -12,6 +12,11 @@
 #include "render/task_wiring.h"
 #include "tasks/bvh.h"
 
+// This task's own value types on the wire (tests/remote/wire.h).
+namespace pathlab::wire {
+PATHLAB_WIRE_FIELDS(TraversalStats, s.nodesVisited, s.boxTests, s.primitiveTests);
+}  // namespace pathlab::wire
+
 namespace pathlab::calls {
 using RayInRange = std::tuple<Ray, Interval>;
 using ClosestResult = std::tuple<std::optional<PrimitiveHit>, TraversalStats>;

@@ -7,6 +7,11 @@
 #include "../remote/trace_calls.h"
 #include "tasks/direct_lighting.h"
 
+// This task's own value types on the wire (tests/remote/wire.h).
+namespace pathlab::wire {
+PATHLAB_WIRE_FIELDS(LightDirection, s.wi, s.distance, s.pdfSolidAngle);
+}  // namespace pathlab::wire
+
 namespace pathlab::calls {
 PATHLAB_REMOTE_CALL(LambertianBrdf, 1, shape::Fixed, Color(Color));
 PATHLAB_REMOTE_CALL(OffsetRayOrigin, 2, shape::Fixed, Point3(Point3, Vec3, Vec3));

@@ -16,8 +16,10 @@ file that names a made-up tree (a test's fixture) says so in a comment
 line holding "check_doc_paths: not checked", and is skipped.
 
 In a student release (no solutions/) a path inside a folder or file the
-release leaves out (solutions/, tests/mutants/, tools/grade, ...) is not
-checked in code and scripts, but the pages a student reads (STUDENT_PAGES:
+release leaves out (solutions/, tests/mutants/, tools/grade, ...), or a
+task folder's file that only the withheld tasks may have
+(tests/NN-name/reference-variances.txt where no suite handed out has
+one), is not checked in code and scripts, but the pages a student reads (STUDENT_PAGES:
 the README, the docs, the handouts, the task files and their API
 headers) must name only what the release holds; in the course
 repository, a file only a release has (RELEASE_ONLY: its course's task
@@ -82,11 +84,16 @@ def exists(base: Path, pattern: str) -> bool:
 
 
 def left_out_of_release(root: Path, pattern: str) -> bool:
-    """True in a student release when the mention is inside something the release removed."""
+    """True in a student release when the mention is inside something the release removed,
+    or names a file that only some task folders hold (tests/NN-name/reference-variances.txt)
+    and the release withheld every suite that has one."""
     if (root / "solutions").exists():
         return False
     parts = pattern.split("/")
-    return any(not exists(root, "/".join(parts[:n])) for n in (1, 2) if len(parts) >= n)
+    if any(not exists(root, "/".join(parts[:n])) for n in (1, 2) if len(parts) >= n):
+        return True
+    task = PLACEHOLDER["NN-name"]
+    return task in parts and len(pathlab_tasks.handed_out(root)) < len(pathlab_tasks.tasks(root))
 
 
 def main() -> int:

@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """The sampling lab, headless, judged on what it must accept and reject.
 
-  check_lab.py PATHLAB TESTS_BUILD_DIR TESTS_SOURCE_DIR
+  check_lab.py PATHLAB TESTS_BUILD_DIR TESTS_SOURCE_DIR [--task NN-name]
+
+(--task NN-name: that task's warps in 1 and 4 and its lab_cases.txt in 3
+alone, as tests/new-task/test_new_task.py checks a course's own task.)
 
 Each verdict is taken under seeds 1, 2, 3 (independent samples): a correct
 warp must be ACCEPTED under at least two (a correct warp is rejected in
@@ -97,11 +100,13 @@ def judged(want, seen):
 
 def main() -> int:
     pathlab, build, tests = Path(sys.argv[1]), Path(sys.argv[2]), Path(sys.argv[3])
+    only = sys.argv[sys.argv.index("--task") + 1] if "--task" in sys.argv[4:] else None
     failures = []
     listing = subprocess.run([str(pathlab), "lab", "--list"], capture_output=True, text=True, check=True).stdout
-    warps = [line.split()[0] for line in listing.splitlines() if line.strip()]
-    if len(warps) < 11:
-        failures.append(f"pathlab lab --list names {len(warps)} warps: {warps}")
+    warps = [line.split()[0] for line in listing.splitlines()
+             if line.strip() and (not only or line.split()[1].startswith(f"T{int(only[:2])}."))]
+    if len(warps) < (1 if only else 11):
+        failures.append(f"pathlab lab --list names {len(warps)} warps{f' of task {only}' if only else ''}: {warps}")
 
     with tempfile.TemporaryDirectory(prefix="pathlab-lab-") as temp:
         for warp in warps:
@@ -129,19 +134,19 @@ def main() -> int:
                 if drawn != 20000 or abs(expected - 20000) > 200:
                     failures.append(f"{warp}: the CSV's counts sum to {drawn:g} observed, {expected:g} expected")
 
-        for warp, *settings in REFERENCE_SETTINGS:
+        for warp, *settings in [] if only else REFERENCE_SETTINGS:
             seen, out = verdicts(pathlab, warp, *settings)
             print(f"  reference {warp} {' '.join(settings)}: {' '.join(seen)}")
             if not judged("accept", seen):
                 failures.append(f"reference {warp} {settings}: {seen}\n{out}")
 
-        for warp, *settings in MISTAKES:
+        for warp, *settings in [] if only else MISTAKES:
             seen, out = verdicts(pathlab, warp, *settings, want="reject")
             print(f"  {warp} with {' '.join(settings)}: {' '.join(seen)}")
             if not judged("reject", seen):
                 failures.append(f"{warp} {settings}: {seen}\n{out}")
 
-    case_lines = [line for cases in sorted(tests.glob("[0-9][0-9]-*/lab_cases.txt"))
+    case_lines = [line for cases in sorted(tests.glob(f"{only or '[0-9][0-9]-*'}/lab_cases.txt"))
                   for line in cases.read_text().splitlines()]
     if not case_lines:
         failures.append(f"no lab case in {tests}/NN-name/lab_cases.txt")
@@ -158,6 +163,8 @@ def main() -> int:
         if not judged(want, seen):
             failures.append(f"{path} on {warp}: {seen}, want {want}\n{out[-1500:]}")
 
+    if only:
+        return report(failures)
     black = SOURCE / "media/envmaps/black.exr"
     for bad, why in ((["lab", "no-such-warp"], "no warp"), (["lab", "annulus", "--set", "r1=7"], "must be between"),
                      (["lab", "annulus", "--set", "colour=1"], "has the parameters"),
@@ -187,6 +194,10 @@ def main() -> int:
     if named.returncode != 0 or "ACCEPTED" not in named.stdout:
         failures.append(f"pathlab lab annulus --set sequence=sobol: exit {named.returncode}, {named.stderr[:200]!r}")
 
+    return report(failures)
+
+
+def report(failures) -> int:
     for f in failures:
         print("FAIL:", f)
     print(f"sampling-lab: {'ok' if not failures else f'{len(failures)} failures'}")

@@ -29,9 +29,7 @@
 #include "tasks/adaptive_sampling.h"
 #include "tasks/bvh.h"
 #include "tasks/camera_rays.h"
-#include "tasks/direct_lighting.h"
 #include "tasks/environment.h"
-#include "tasks/intersection.h"
 #include "util/image.h"
 
 namespace pathlab::wire {
@@ -281,7 +279,11 @@ void read(Reader& r, T& s) {
 template <class T>
 void Writer::put(const T& value) { write(*this, value); }
 
-// Field lists of the framework's and the tasks' value types.
+// Field lists of the framework's value types, and of the task types the
+// framework's own calls carry (image_calls.h: the camera, the tree, the
+// adaptive settings). A task's other value types are its own: its calls.h
+// lists their fields with the same macro, in namespace pathlab::wire (task 2's
+// SurfacePoint, task 3's TraversalStats, task 4's LightDirection).
 #define PATHLAB_WIRE_FIELDS(Type, ...)                       \
   template <>                                                \
   struct Fields<Type> {                                      \
@@ -294,15 +296,12 @@ PATHLAB_WIRE_FIELDS(Camera, s.position, s.lookAt, s.up, s.vfovDegrees, s.apertur
 PATHLAB_WIRE_FIELDS(CameraBasis, s.forward, s.right, s.up);
 PATHLAB_WIRE_FIELDS(AdaptiveSettings, s.tolerance, s.batch, s.minSpp, s.maxSpp);
 PATHLAB_WIRE_FIELDS(TriangleHit, s.t, s.b1, s.b2);
-PATHLAB_WIRE_FIELDS(SurfacePoint, s.point, s.geometricNormal, s.shadingNormal);
 PATHLAB_WIRE_FIELDS(Aabb, s.min, s.max);
 PATHLAB_WIRE_FIELDS(BvhNode, s.bounds, s.leftOrFirst, s.count);
 PATHLAB_WIRE_FIELDS(Bvh, s.nodes, s.primitives);
-PATHLAB_WIRE_FIELDS(TraversalStats, s.nodesVisited, s.boxTests, s.primitiveTests);
 PATHLAB_WIRE_FIELDS(PrimitiveHit, s.t, s.b1, s.b2, s.primitive);
 PATHLAB_WIRE_FIELDS(Hit, s.t, s.point, s.geometricNormal, s.shadingNormal, s.primitive, s.material);
 PATHLAB_WIRE_FIELDS(AreaSample, s.point, s.normal, s.radiance, s.pdfArea);
-PATHLAB_WIRE_FIELDS(LightDirection, s.wi, s.distance, s.pdfSolidAngle);
 PATHLAB_WIRE_FIELDS(BsdfSample, s.wi, s.f, s.pdf, s.isDelta);
 PATHLAB_WIRE_FIELDS(EnvironmentDistribution, s.width, s.height, s.marginalCdf, s.conditionalCdf, s.totalWeight);
 PATHLAB_WIRE_FIELDS(EnvironmentSample, s.direction, s.pdfSolidAngle);
@@ -315,8 +314,6 @@ PATHLAB_WIRE_FIELDS(TriangleMesh, s.name, s.positions, s.normals, s.triangles, s
 PATHLAB_WIRE_FIELDS(Sphere, s.center, s.radius, s.material);
 PATHLAB_WIRE_FIELDS(PointLight, s.position, s.intensity);
 PATHLAB_WIRE_FIELDS(RenderSettings, s.width, s.height, s.samplesPerPixel, s.lightSamples, s.maxDepth, s.seed);
-
-#undef PATHLAB_WIRE_FIELDS
 
 // An image: its pixel count must match its size.
 inline void write(Writer& w, const Image& image) {

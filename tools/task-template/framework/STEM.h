@@ -2,8 +2,8 @@
 // file; where the task is not the student's, the programs link the course's
 // reference in its place).
 //
-// tools/new-task wrote this task from its template: a uniform point on a
-// triangle, a worked example of every file a task has. Replace it with your
+// Written from the task template: a uniform point on a triangle, a worked
+// example of every file a task has. Replace it with your
 // own functions; keep each contract here, where the tests read it too.
 #pragma once
 

@@ -1,0 +1,255 @@
+#!/usr/bin/env python3
+"""A course's own task 13, from tools/new-task to every tool, in a scratch
+copy of the repository (docs/own-task.md): nothing but the new task's
+folders is edited, and then
+
+  1. `git status` lists only the task's folders (tasks/, solutions/, tests/
+     with its generated mutants/ and alternates/, writeup/), its API header
+     framework/tasks/NAME.h, and one generated row of README.md's task table;
+  2. it configures and builds, without a warning in the task's files; its
+     CTest tests pass: the suite on the reference, the suite failing on the
+     stub, its mutant losing points, its alternate keeping them; and the
+     lab's cases: its warp accepted, the stub and the mutant rejected, the
+     alternate accepted (tests/lab/check_lab.py --task);
+  3. `tools/grade --tasks 13` gives the stub 0 and the reference full marks,
+     and `tools/check --tasks 13` grades the stub the same as tools/grade;
+  4. `make-student-release --tasks 13` holds its files and hands it out, and
+     reads as a complete course (tests/docs/check_release_text.py), and
+     `make-zip.sh --tasks 13` packs its folders for Gradescope;
+  5. the GUI shows its panel button, whole, labelled from its task.json, and
+     draws its panel (a screenshot, kept in WORK_DIR/new-task/); the lab
+     lists its warp and accepts the reference's; `pathlab debug --task 13`
+     draws its view;
+  6. the write-up makes its page, with its figure and its question;
+  7. CI's budget gives it the share its task.json asks for, and the copy's
+     own CTest checks of what every task declares pass (task-manifests,
+     hint-catalogue, mutants-generated, ci-budget, layers, docs-paths,
+     docs-architecture, release-text).
+
+usage: test_new_task.py REPO_ROOT WORK_DIR [--keep]"""
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+import zipfile
+from pathlib import Path
+
+root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
+keep = "--keep" in sys.argv[3:]
+work = work_dir / "new-task"
+copy = work / "repo"
+build = copy / "build"
+N, NAME, FOLDER, STEM, LABEL = 13, "textures", "13-textures", "textures", "Textures"
+failures = []
+started = time.time()
+
+
+def run(argv, timeout=900, cwd=None, env=None, check=True, what=None):
+    """Runs argv in the copy; a failure is recorded (with the end of its output) and returned."""
+    t = time.time()
+    p = subprocess.run([str(a) for a in argv], cwd=cwd or copy, env=env, capture_output=True, text=True,
+                       timeout=timeout)
+    print(f"  {what or ' '.join(map(str, argv))[:110]}: exit {p.returncode}, {time.time() - t:.0f} s", flush=True)
+    if check and p.returncode != 0:
+        failures.append(f"{what or argv}: exit {p.returncode}\n{(p.stdout + p.stderr)[-2500:]}")
+    return p
+
+
+def expect(condition, message):
+    if not condition:
+        failures.append(message)
+    return condition
+
+
+def copy_repository():
+    """The working tree's files (tracked and untracked, .gitignore respected), committed in a new repository."""
+    listed = subprocess.run(["git", "-C", root, "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
+                            capture_output=True, check=True).stdout.decode().split("\0")
+    for rel in filter(None, listed):
+        source = root / rel
+        if source.is_file():
+            target = copy / rel
+            target.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(source, target)
+    git = ["git", "-c", "user.name=PathLab", "-c", "user.email=pathlab@example.invalid"]
+    for argv in (["init", "-q"], ["add", "-A"], ["commit", "-q", "-m", "the course before its own task"]):
+        run(git + argv, what="git " + argv[0])
+    return git
+
+
+def status_lists_only_the_task():
+    """1. What new-task changed: the task's folders, its header and one README row."""
+    own = (f"tasks/{FOLDER}/", f"solutions/{FOLDER}/", f"tests/{FOLDER}/", f"tests/mutants/{FOLDER}/",
+           f"tests/alternates/{FOLDER}/", f"writeup/{FOLDER}.md", f"framework/tasks/{STEM}.h")
+    status = run(["git", "status", "--porcelain", "-uall"], what="git status").stdout.splitlines()
+    paths = [line[3:] for line in status]
+    others = [p for p in paths if not p.startswith(own) and p != "README.md"]
+    expect(not others, f"new-task changed files outside the task's folders: {others}")
+    for folder in own:
+        expect(any(p.startswith(folder) for p in paths), f"new-task wrote nothing in {folder}")
+    diff = run(["git", "diff", "-U0", "README.md"], what="git diff README.md").stdout
+    changed = [line for line in diff.splitlines() if line[:1] in "+-" and not line.startswith(("+++", "---"))]
+    expect(changed == [f"+| {N} {NAME} | [`tasks/{FOLDER}/`](tasks/{FOLDER}/README.md) | "
+                       "student file, reference, debugger view, tests, lab warp (a course's own task) |"],
+           f"README.md: not one added task-table row for task {N}: {changed}")
+    print(f"  git status: {len(paths)} paths, all the task's own or README.md's one row")
+
+
+def build_and_test():
+    """2. The build, and the task's CTest tests (suite, stub, mutant, alternate) and lab cases."""
+    run(["cmake", "--preset", "release"], what="configure (release preset)")
+    targets = run(["cmake", "--build", build, "--target", "help"], what="the build's targets").stdout
+    labs = re.findall(rf"^(pathlab-lab-\w+-{FOLDER}-\S+):", targets, re.M)
+    expect(len(labs) == 3, f"not one lab program for each of the 3 lab cases: {labs}")
+    built = run(["cmake", "--build", build, "--parallel", str(os.cpu_count() or 2), "--target", "pathlab",
+                 "pathlab-gui", f"validity-{FOLDER}", *labs], timeout=1500,
+                what="build pathlab, pathlab-gui, the judge, its candidates and lab programs")
+    warnings = [line for line in built.stdout.splitlines() if "warning:" in line and (FOLDER in line or STEM in line)]
+    expect(not warnings, f"warnings in the task's files: {warnings[:3]}")
+    tests = run(["ctest", "--test-dir", build, "-R", FOLDER, "--output-on-failure"], timeout=900,
+                what=f"ctest -R {FOLDER}")
+    ran = re.findall(r"Test +#\d+: (\S+) \.+\s+Passed", tests.stdout)
+    expected = {f"{FOLDER}-build", FOLDER, f"{FOLDER}-fails-on-stub", f"{FOLDER}-validity-build",
+                f"mutants/{FOLDER}/slices-uniform", f"alternates/{FOLDER}/folded-square"}
+    expect(expected <= set(ran), f"ctest -R {FOLDER} did not pass {sorted(expected - set(ran))} (passed: {ran})")
+    run([sys.executable, copy / "tests/lab/check_lab.py", build / "pathlab", build / "tests", copy / "tests",
+         "--task", FOLDER], what=f"check_lab.py --task {FOLDER} (its warp, the stub, the mutant, the alternate)")
+
+
+def grade():
+    """3. tools/grade and tools/check, on the stub and the reference."""
+    env = dict(os.environ, PATHLAB_SANDBOX_UID=os.environ.get("PATHLAB_SANDBOX_UID", "64993"))  # its own uid
+    scores = {}
+    for kind in ("tasks", "solutions"):
+        out = work / f"grade-{kind}.json"
+        run([sys.executable, copy / "tools/grade", copy / kind, "--tasks", str(N), "--build-dir", build,
+             "--out", out], env=env, check=kind == "solutions", what=f"tools/grade {kind} --tasks {N}")
+        report = json.loads(out.read_text()) if out.exists() else {"tests": []}
+        points = sum(t["max_score"] for t in report["tests"])
+        names = {t["name"].split(":")[0] for t in report["tests"]}
+        scores[kind] = (report.get("score"), points)
+        expect(points > 0 and names == {f"Task {N}"}, f"tools/grade {kind}: tests {sorted(names)}, {points} points")
+    expect(scores["tasks"][0] == 0, f"tools/grade: the stub scored {scores['tasks']}, not 0")
+    expect(scores["solutions"][0] == scores["solutions"][1], f"tools/grade: the reference scored {scores['solutions']}")
+    out = work / "check-tasks.json"
+    run([sys.executable, copy / "tools/check", "--tasks", str(N), "--build-dir", build, "--out", out], check=False,
+        what=f"tools/check --tasks {N}")
+    checked = json.loads(out.read_text()) if out.exists() else {}
+    expect(checked.get("score") == 0 and sum(t["max_score"] for t in checked.get("tests", [])) == scores["tasks"][1],
+           f"tools/check --tasks {N} on the stub: {checked.get('score')} of "
+           f"{sum(t['max_score'] for t in checked.get('tests', []))}, tools/grade: {scores['tasks']}")
+    print(f"  grades: stub {scores['tasks'][0]}/{scores['tasks'][1]}, reference {scores['solutions'][0]}/"
+          f"{scores['solutions'][1]}; tools/check on the stub {checked.get('score')}")
+
+
+def release_and_zip(git):
+    """4. The student release and the Gradescope zip (of the committed tree, as make-zip.sh packs HEAD)."""
+    run(git + ["add", "-A"], what="git add")
+    run(git + ["commit", "-q", "-m", f"task {N}"], what="git commit")
+    release = work / "release"
+    shutil.rmtree(release, ignore_errors=True)
+    run([copy / "tools/make-student-release", "--text-only", "--tasks", str(N), release],
+        what=f"make-student-release --text-only --tasks {N}")
+    for rel in (f"tasks/{FOLDER}/{STEM}.cpp", f"tasks/{FOLDER}/README.md", f"tests/{FOLDER}/test_{STEM}.cpp",
+                f"framework/tasks/{STEM}.h", f"writeup/{FOLDER}.md"):
+        expect((release / rel).is_file(), f"the student release has no {rel}")
+    expect(not (release / "solutions").exists(), "the student release has solutions/")
+    handed = release / "tasks/handed-out.txt"
+    expect(handed.is_file() and re.sub(r"#.*", "", handed.read_text()).split() == [str(N)],
+           f"the release's tasks/handed-out.txt does not hand out task {N} alone")
+    run([sys.executable, copy / "tests/docs/check_release_text.py", copy, "--tasks", f"1,{N}"],
+        what=f"check_release_text.py (the release of tasks 1 and {N})")
+    archive = work / "autograder.zip"
+    run(["bash", copy / "tools/gradescope/make-zip.sh", archive, "--tasks", str(N)], what=f"make-zip.sh --tasks {N}")
+    if archive.exists():
+        with zipfile.ZipFile(archive) as z:
+            names = set(z.namelist())
+            tasks_line = z.read("gradescope-tasks").decode().strip()
+        for rel in (f"source/tasks/{FOLDER}/{STEM}.cpp", f"source/solutions/{FOLDER}/{STEM}.cpp",
+                    f"source/tests/{FOLDER}/test_{STEM}.cpp", f"source/framework/tasks/{STEM}.h"):
+            expect(rel in names, f"the Gradescope zip has no {rel}")
+        expect(tasks_line == str(N), f"the Gradescope zip grades tasks {tasks_line!r}, not {N}")
+
+
+def gui_lab_and_views():
+    """5. The GUI's panel, the lab's warp and the debugger's view."""
+    shot = work / f"gui-panel-{N}.png"
+    script = work / "session.txt"
+    script.write_text(f"panel {N}\nwait\nwait-panel\nscreenshot {shot}\npanels\nlab {NAME}-triangle\nwait-panel\n"
+                      "lab-verdict\nquit\n")
+    session = run(["xvfb-run", "-a", "-f", work / "Xauthority", "-s", "-screen 0 1600x1000x24",
+                   build / "pathlab-gui", "--script", script, "--timeout", "300"], what="pathlab-gui --script")
+    log = session.stdout
+    panels = next((line for line in log.splitlines() if line.startswith("script: panels -> ")), "")
+    expect(re.search(rf"-> {N + 1} buttons in \d+ rows, 0 cut: ", panels) and
+           (f": {N} {LABEL}" in panels or f"| {N} {LABEL}" in panels),
+           f"the GUI has no whole button '{N} {LABEL}' among {N + 1}: {panels!r}")
+    expect(re.search(r"lab-verdict -> .*ACCEPTED", log), f"the GUI's lab did not accept {NAME}-triangle: {log[-600:]}")
+    expect(shot.is_file() and shot.stat().st_size > 20000, f"no screenshot of panel {N} ({shot})")
+    listing = run([build / "pathlab", "lab", "--list"], what="pathlab lab --list").stdout
+    expect(re.search(rf"^{NAME}-triangle\s+T{N}\.1", listing, re.M), f"pathlab lab --list has no {NAME}-triangle")
+    lab = run([build / "pathlab", "lab", f"{NAME}-triangle", "-o", work / "lab.png"], what=f"pathlab lab {NAME}-triangle")
+    expect("ACCEPTED" in lab.stdout, f"the lab did not accept the reference's warp: {lab.stdout[-400:]}")
+    views = run([build / "pathlab", "debug", "--list"], what="pathlab debug --list").stdout
+    expect(f"--task {N} --view triangle" in views, f"pathlab debug --list has no task {N} view")
+    run([build / "pathlab", "debug", "--task", str(N), "--view", "triangle", "-o", work / "view.png"],
+        what=f"pathlab debug --task {N} --view triangle")
+    expect((work / "view.png").is_file(), f"pathlab debug --task {N} drew nothing")
+
+
+def writeup():
+    """6. The write-up's page for the task: its heading, its figure, its question."""
+    out = work / "writeup"
+    run([sys.executable, copy / "tools/writeup", "--build", build, "--tasks", str(N), "--no-pdf", "--no-convergence",
+         "--out", out], timeout=600, what=f"tools/writeup --tasks {N}")
+    pages = sorted(out.glob("*.html")) if out.is_dir() else []
+    page = pages[0].read_text() if pages else ""
+    question = next(re.sub(r"\*\*[^*]*\*\*\s*", "", line[1:]).strip()  # its words, without the bold number
+                    for line in (copy / f"writeup/{FOLDER}.md").read_text().splitlines() if line.startswith(">"))
+    expect(f"Task {N}" in page and "<img" in page and question[:40] in page,
+           f"the write-up's page has no task {N} section with its figure and question ({pages})")
+
+
+def declared_checks():
+    """7. CI's budget, and the copy's checks of what every task declares."""
+    template = json.loads((copy / f"tasks/{FOLDER}/task.json").read_text())["ci"]
+    share = lambda tree, stage: int(subprocess.run([sys.executable, tree / "tools/pathlab_tasks.py", "ci-allowance",
+                                                    stage], capture_output=True, text=True).stdout or -1)
+    for stage, seconds in template.items():
+        expect(share(copy, stage) == share(root, stage) + seconds,
+               f"CI's stage {stage}: the tasks' share is {share(copy, stage)} s, not {share(root, stage)} + {seconds}")
+    checks = ["task-manifests", "hint-catalogue", "mutants-generated", "ci-budget", "layers", "docs-paths",
+              "docs-architecture", "release-text"]
+    tests = run(["ctest", "--test-dir", build, "-R", f"^({'|'.join(checks)})$", "--output-on-failure"],
+                what="the copy's checks: " + ", ".join(checks))
+    passed = set(re.findall(r"Test +#\d+: (\S+) \.+\s+Passed", tests.stdout))
+    expect(passed == set(checks), f"the copy's checks {sorted(set(checks) - passed)} did not pass")
+
+
+def main() -> int:
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    git = copy_repository()
+    made = run([sys.executable, copy / "tools/new-task", str(N), NAME, "--title", "Texture mapping", "--label", LABEL],
+               what=f"tools/new-task {N} {NAME}")
+    if made.returncode == 0:
+        for step in (status_lists_only_the_task, build_and_test, grade, lambda: release_and_zip(git),
+                     gui_lab_and_views, writeup, declared_checks):
+            step()
+    print(f"total: {time.time() - started:.0f} s")
+    for f in failures:
+        print("FAIL:", f)
+    if failures:
+        print(f"scratch kept: {work}")
+        return 1
+    if not keep:  # the panel's screenshot stays, for a person to look at
+        shutil.rmtree(copy, ignore_errors=True)
+    print(f"new-task: task {N} built, graded, released, zipped, shown and budgeted with no file outside its folders")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
