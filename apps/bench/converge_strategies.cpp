@@ -52,7 +52,7 @@ Strategy strategy(const std::string& name) {
   } else if (name == "adaptive" || name.rfind("adaptive-", 0) == 0) {
     // Task 11: each pixel stops once its 95 % interval is within the
     // tolerance (adaptive-TOL; 0.2 by default: on CBspheres.dae it pays at
-    // 30 s and at 120 s, docs/performance.md); the curve's spp is each
+    // 30 s and at 120 s, docs/performance-convergence.md); the curve's spp is each
     // render's maximum, a sixteenth of it the minimum.
     AdaptiveSettings adaptive;
     adaptive.tolerance = 0.2;

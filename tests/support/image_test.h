@@ -4,7 +4,7 @@
 // per channel with the stored reference image by Welch's t statistic, which
 // uses both images' sample variances. The threshold is Bonferroni-corrected
 // over every block and channel so that a correct render fails an image with
-// probability at most kImageFalseFailure (measured: docs/grader-validity.md).
+// probability at most kImageFalseFailure (measured: docs/test-power.md).
 //
 // Reference images live in tests/NN-name/images/<name>.exr (each pixel's
 // mean, 16x the test's samples per pixel) and <name>.variance.exr (the
