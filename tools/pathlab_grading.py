@@ -40,6 +40,17 @@ def clip(text: str, limit: int = OUTPUT_LIMIT) -> str:
 
 # ---------------------------------------------------------------- building
 
+def judge_manifest(build: Path, task: int):
+    """(name, points, visibility) of task's test cases, from the judge's own listing (build/tests/test-NN-name)."""
+    directory, _ = TASKS[task]
+    code, listing = run([str(build / "tests" / f"test-{directory}"), "--list-test-cases"], timeout=60)
+    cases = [(m.group(3), int(m.group(1)), m.group(2))
+             for m in re.finditer(r"^TEST (\d+) (\w+) (.*)$", listing, re.M)]
+    if not cases:
+        raise RuntimeError(f"the judge test-{directory} listed no test cases:\n{clip(listing, 2000)}")
+    return cases
+
+
 def compile_command(build: Path, task: int):
     """The compiler line CMake uses for task `task`'s reference file, as a list."""
     directory, file_name = TASKS[task]
@@ -120,14 +131,7 @@ class Grader:
         self.results.append(result)
 
     def manifest(self, task):
-        """(name, points, visibility) of task's test cases, from the judge's own listing."""
-        directory, _ = TASKS[task]
-        code, listing = run([str(self.build / "tests" / f"test-{directory}"), "--list-test-cases"], timeout=60)
-        cases = [(m.group(3), int(m.group(1)), m.group(2))
-                 for m in re.finditer(r"^TEST (\d+) (\w+) (.*)$", listing, re.M)]
-        if not cases:
-            raise RuntimeError(f"the judge test-{directory} listed no test cases:\n{clip(listing, 2000)}")
-        return cases
+        return judge_manifest(self.build, task)
 
     def prepare_sandbox(self):
         """uid mode: pathlab-confine (no sockets, no IPC) where the sandbox uid

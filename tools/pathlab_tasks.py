@@ -41,7 +41,11 @@ def tasks(root: Path = ROOT) -> dict:
 #               {"scene": a scene file or "" (the built-in one), "script": pathlab-gui --script lines}
 #   ci          the seconds it adds to each of CI's stages ({"test": 45, "asan": 10, ...}): its share of
 #               CI's time budget (.ci/run adds every task's to a stage's base; docs/ci.md)
-MANIFEST_KEYS = {"label": str, "summary": str, "contents": str, "writeup": list, "screenshot": dict, "ci": dict}
+#   grade       what grading it takes: {"seconds": 12, "memory_mb": 144}, the reference's grade at half a
+#               CPU and its peak memory (tools/gradescope/container-check --cases each-task); the grading
+#               platforms' adapters set their timeouts from it (docs/ta-guide.md)
+MANIFEST_KEYS = {"label": str, "summary": str, "contents": str, "writeup": list, "screenshot": dict, "ci": dict,
+                 "grade": dict}
 LABEL_MAX = 14
 
 
@@ -80,6 +84,9 @@ def manifest(number: int, root: Path = ROOT) -> dict:
     if not all(re.fullmatch(r"[a-z0-9-]+", stage) and type(seconds) is int and 0 <= seconds <= 3600
                for stage, seconds in data["ci"].items()):
         raise SystemExit(f"pathlab_tasks: {where}: ci should be {{\"stage\": seconds, ...}}, whole seconds 0 to 3600")
+    if not (set(data["grade"]) == {"seconds", "memory_mb"} and
+            all(type(v) is int and 0 < v <= 100_000 for v in data["grade"].values())):
+        raise SystemExit(f"pathlab_tasks: {where}: grade should be {{\"seconds\": N, \"memory_mb\": M}}, whole numbers")
     shot = data["screenshot"]
     if not (set(shot) == {"scene", "script"} and isinstance(shot["scene"], str) and isinstance(shot["script"], list)
             and all(isinstance(line, str) and "\n" not in line for line in shot["script"])):

@@ -18,12 +18,17 @@ release holds no solutions/ and no tools/grade; a task file that includes
 a file outside the framework's headers, or that links only with the
 student's own other task (a helper in another task's file), loses that
 task's points as Gradescope's grader does (the rules are the grader's).
+The half-done submission also goes through GitHub Classroom's workflow (the
+release is made with --classroom): its steps run in the student's
+repository as GitHub runs them, and what GitHub's grading reporter reports
+to the classroom is tools/check's points, test by test (classroom()).
 
 The release and its check's build (build-check/, the judges linked with
 the compiled reference) are made by a first run with --prepare, which CTest
 runs beside gradescope-zip; the comparison runs once both are done.
 
 usage: test_check.py REPO_ROOT WORK_DIR [--prepare] [--keep]"""
+import base64
 import json
 import os
 import re
@@ -67,8 +72,8 @@ def prepare() -> int:
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
     t = time.time()
-    made = subprocess.run([str(root / "tools/make-student-release"), "--no-check", "--worktree", str(release)],
-                          capture_output=True, text=True, timeout=1200)
+    made = subprocess.run([str(root / "tools/make-student-release"), "--no-check", "--worktree", "--classroom",
+                           str(release)], capture_output=True, text=True, timeout=1200)
     print(f"student release: exit {made.returncode}, {time.time() - t:.0f} s")
     if made.returncode != 0:
         print(f"FAIL: make-student-release:\n{made.stdout[-2000:]}{made.stderr[-2000:]}")
@@ -100,6 +105,75 @@ def prepare() -> int:
     for f in failures:
         print("FAIL:", f)
     return 1 if failures else 0
+
+
+def classroom(submission: Path, mine: dict) -> list:
+    """GitHub Classroom's workflow (.github/workflows/classroom.yml, installed by --classroom) on the
+    student's repository holding `submission`'s files: its run steps, in order, as GitHub runs them
+    (bash in the repository, with GITHUB_OUTPUT and GITHUB_STEP_SUMMARY files; the Install step's
+    packages are here already), then what GitHub's grading reporter does with the step outputs: each
+    runner's TASKN_RESULTS decoded (base64 JSON) and the points added up as it tells the classroom.
+    Every test's points and the total must be tools/check's."""
+    problems = []
+    workflow = (release / ".github/workflows/classroom.yml").read_text()
+    runners = re.search(r"^\s+runners: (\S+)$", workflow, re.M)
+    runners = runners.group(1).split(",") if runners else []
+    env = dict(re.findall(r'^\s+(TASK\d+_RESULTS): "\$\{\{ steps\.points\.outputs\.(task\d+) \}\}"$', workflow, re.M))
+    if not (workflow.startswith("# GitHub Classroom") and "\nname: Autograding Tests\n" in workflow and
+            "  run-autograding-tests:\n" in workflow and "uses: classroom-resources/autograding-grading-reporter@v1"
+            in workflow and runners == [f"task{n}" for n in CORE] and
+            env == {f"{r.upper()}_RESULTS": r for r in runners}):
+        return [f"classroom.yml: not GitHub Classroom's workflow for tasks {CORE} (runners {runners}, env {env})"]
+    runs = re.findall(r"^      - name: (.+)\n(?:        .*\n)*?        run: (.+)$", workflow, re.M)
+    if [name for name, _ in runs][:1] != ["Install"] or len(runs) != 3:
+        return [f"classroom.yml: its run steps are not Install, the grade and the points: {runs}"]
+    saved = {}
+    for n in CORE:  # the student's files in their repository's tasks/ (the stubs put back after)
+        folder, name = pathlab_tasks.tasks(root)[n]
+        if (submission / name).exists():
+            saved[release / "tasks" / folder / name] = (release / "tasks" / folder / name).read_bytes()
+            shutil.copy(submission / name, release / "tasks" / folder / name)
+    outputs, summary = work / "classroom-output", work / "classroom-summary.md"
+    outputs.write_text("")
+    summary.write_text("")
+    try:
+        for name, command in runs[1:]:
+            step = subprocess.run(["bash", "-e", "-c", command], cwd=release, capture_output=True, text=True,
+                                  timeout=1800, env=dict(os.environ, GITHUB_OUTPUT=str(outputs),
+                                                         GITHUB_STEP_SUMMARY=str(summary)))
+            print(f"  classroom.yml step '{name}': exit {step.returncode}")
+            if step.returncode != 0:
+                problems.append(f"classroom.yml step '{name}' failed:\n{step.stdout[-800:]}{step.stderr[-800:]}")
+    finally:
+        for path, data in saved.items():
+            path.write_bytes(data)
+    step_outputs = dict(line.split("=", 1) for line in outputs.read_text().splitlines() if "=" in line)
+    total = maximum = 0
+    seen = {}
+    for runner in runners:  # the reporter: parseRunnerResults, then NotifyClassroom's sum
+        try:
+            result = json.loads(base64.b64decode(step_outputs[env[f"{runner.upper()}_RESULTS"]]))
+        except (KeyError, ValueError) as e:
+            problems.append(f"classroom: runner {runner}'s results do not decode ({e})")
+            continue
+        if not (result.get("version") == 1 and result.get("status") in ("pass", "fail", "error") and
+                isinstance(result.get("max_score"), (int, float)) and isinstance(result.get("tests"), list) and
+                all(isinstance(t.get("name"), str) and t.get("status") in ("pass", "fail", "error") and
+                    isinstance(t.get("score"), (int, float)) for t in result["tests"])):
+            problems.append(f"classroom: runner {runner}'s results are not the reporter's format: {str(result)[:300]}")
+            continue
+        maximum += result["max_score"]
+        total += sum(t["score"] for t in result["tests"])
+        seen.update({t["name"]: t["score"] for t in result["tests"]})
+    want = {t["name"]: t["score"] for t in mine["tests"]}
+    if seen != want or total != mine["score"] or maximum != sum(t["max_score"] for t in mine["tests"]):
+        problems.append(f"classroom: {total:g} of {maximum:g} points reported, tools/check {mine['score']:g}; "
+                        f"tests differ: {[k for k in want if seen.get(k) != want[k]][:3]}")
+    else:
+        print(f"  classroom: {total:g} of {maximum:g} points in {len(runners)} runners, each test tools/check's")
+    if "Total" not in summary.read_text():
+        problems.append("classroom: the grade's table is not on the run's summary page")
+    return problems
 
 
 def main() -> int:
@@ -136,6 +210,8 @@ def main() -> int:
             failures.append(f"{kind}: the check did not link the compiled reference:\n{output[-1500:]}")
         if "Total" not in output:
             failures.append(f"{kind}: no table in the check's output:\n{output[-1500:]}")
+        if kind == "half-done":  # the same submission through GitHub Classroom's workflow
+            failures += classroom(graded / kind, mine)
 
     # A task the release does not hand out: refused by name, not graded against a suite it lacks.
     for n in WITHHELD:

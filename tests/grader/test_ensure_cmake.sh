@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# tools/gradescope/ensure-cmake.sh (setup.sh's CMake check) with stand-ins
+# tools/ensure-cmake.sh (tools/install-grader's CMake check) with stand-ins
 # first on PATH: a `cmake` that reports 3.22.1 (Ubuntu 22.04, Gradescope's
 # default image) and a `python3` whose `-m pip install` either fails (no
 # network) or puts a CMake 3.25+ first on PATH (the real one behind a shim).
 #   test_ensure_cmake.sh REPO_ROOT
 root=$1
-script="$root/tools/gradescope/ensure-cmake.sh"
+script="$root/tools/ensure-cmake.sh"
 real_cmake=$(command -v cmake)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -45,7 +45,7 @@ for missing in old none; do
   out=$(PATH="$bin:$PATH" PATHLAB_SKIP_APT=1 bash "$script" 2>&1); rc=$?
   [[ $rc -eq 0 && $out == *"installing a newer CMake"* && $out == *"now CMake 3."* ]] ||
     fail "CMake $missing, pip that installs one: exit $rc (want 0), said: $out"
-  # Sourced, as setup.sh does: the new cmake is the one found afterwards.
+  # Sourced, as tools/install-grader does: the new cmake is the one found afterwards.
   out=$(PATH="$bin:$PATH" PATHLAB_SKIP_APT=1 bash -c "set -euo pipefail; source '$script' > /dev/null; cmake --version" 2>&1)
   [[ $out == "cmake version 3."* && $out != *"3.22"* ]] || fail "CMake $missing, sourced: then cmake --version says: $out"
 done

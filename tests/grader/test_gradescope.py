@@ -25,7 +25,6 @@ usage: test_gradescope.py REPO_ROOT WORK_DIR [--keep]"""
 import json
 import os
 import shutil
-import stat
 import subprocess
 import sys
 import tempfile
@@ -41,6 +40,8 @@ REAL = Path("/autograder")
 SETUP_TIMEOUT, GRADE_TIMEOUT = 1200, 900
 sys.path.insert(0, str(root / "tools"))
 import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
+sys.path.insert(0, str(root / "tests/support"))
+from scratch_report import finish  # noqa: E402
 ALL_TASKS = sorted(pathlab_tasks.tasks(root))
 VISIBILITIES = {"hidden", "after_due_date", "after_published", "visible"}
 # Graded here and by a student's tools/check (test_check.py): mistakes that
@@ -254,16 +255,7 @@ def main() -> int:
     # Nothing outside the scratch folder: the real /autograder is untouched.
     if snapshot(REAL) != real_before:
         failures.append(f"{REAL} was {'created' if real_before is None else 'changed'}: a path is hard-coded")
-    print(f"total: {time.time() - start:.0f} s")
-    for f in failures:
-        print("FAIL:", f)
-    if failures:
-        print(f"scratch kept: {work}")
-        return 1
-    if not keep:
-        shutil.rmtree(work, ignore_errors=True)
-    print("gradescope-zip: ok")
-    return 0
+    return finish("gradescope-zip", failures, work, keep, start, "ok")
 
 
 if __name__ == "__main__":

@@ -39,6 +39,8 @@ from pathlib import Path
 
 root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
 keep = "--keep" in sys.argv[3:]
+sys.path.insert(0, str(root / "tests/support"))
+from scratch_report import finish  # noqa: E402
 work = work_dir / "new-task"
 copy = work / "repo"
 build = copy / "build"
@@ -239,16 +241,9 @@ def main() -> int:
         for step in (status_lists_only_the_task, build_and_test, grade, lambda: release_and_zip(git),
                      gui_lab_and_views, writeup, declared_checks):
             step()
-    print(f"total: {time.time() - started:.0f} s")
-    for f in failures:
-        print("FAIL:", f)
-    if failures:
-        print(f"scratch kept: {work}")
-        return 1
-    if not keep:  # the panel's screenshot stays, for a person to look at
-        shutil.rmtree(copy, ignore_errors=True)
-    print(f"new-task: task {N} built, graded, released, zipped, shown and budgeted with no file outside its folders")
-    return 0
+    # (The copy alone is removed when all passed: the panel's screenshot stays, for a person to look at.)
+    return finish("new-task", failures, copy, keep, started,
+                  f"task {N} built, graded, released, zipped, shown and budgeted with no file outside its folders")
 
 
 if __name__ == "__main__":

@@ -1,0 +1,409 @@
+#!/usr/bin/env python3
+"""Autolab and PrairieLearn grade PathLab as each runs it, here, with the
+same points as tools/grade (docs/ta-autolab.md, docs/ta-prairielearn.md).
+
+No Docker engine runs here, so the images are made as their Dockerfiles make
+them, in a scratch folder standing in for the image's root (IMAGE): the
+tracked tree copied to IMAGE/opt/pathlab, then tools/autolab/image-setup
+(tools/install-grader's build, pathlab-autolab-grade installed setuid root
+in IMAGE/usr/local/bin; PATHLAB_SKIP_APT=1: the packages must be here).
+
+Autolab: tools/autolab/make-autograder makes an assessment of three tasks
+(task 3, for the scoreboard, and two drawn per commit; PATHLAB_PLATFORM_TASKS
+names them) with a problem per task, and one of a single drawn task with a
+problem per test. Each job runs as Tango runs it: the handin (named as the
+assessment's yml says), the autograde-Makefile as Makefile and autograde.tar
+in a job folder owned by an unprivileged uid, `make` run as that uid with
+Tango's limits (100 processes, 100 MB per file), no network, killed at the
+assessment's timeout, and its output cut to Tango's 1,000 KB as autodriver
+cuts it. Handins: the stubs (0 on every problem), the reference (every
+problem's maximum), a half-done one (the reference for task 3, a mutant for
+a second task, the stub for the third: each problem equal to tools/grade's
+points for that task on the same handin), a missing handin (0 everywhere),
+and, per test, the reference and a mutant of the single task. The last line
+must be Autolab's autoresult with exactly the yml's problems, none over its
+maximum, and the scoreboard's columns.
+
+PrairieLearn: tools/prairielearn/make-course makes a question per task for
+two drawn tasks; each job runs as PrairieLearn runs it: /grade (here a
+scratch folder, PL_GRADE_ROOT) with student/, tests/ (the question's),
+serverFilesCourse/, data/data.json and results/, the question's entrypoint
+run as root with no network, killed at its timeout. Submissions: the stub
+(score 0, its failure pictures inlined as PNG data URLs; and its results
+kept within 20 KB, pictures and outputs cut, with the same points, as they
+are within PrairieLearn's 1 MB), the reference
+(score 1), a mutant (each test's points equal tools/grade's), a file that is
+no task file ("gradable": false, costing no attempt); results.json always
+under PrairieLearn's 1 MB and valid against the format the test carries
+(RESULTS_SCHEMA); the 1 MB rule itself on a lower limit.
+
+usage: test_platforms.py REPO_ROOT WORK_DIR [--keep]"""
+import base64
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tarfile
+import time
+import zipfile
+from pathlib import Path
+
+root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
+keep = "--keep" in sys.argv[3:]
+work = work_dir / "platforms"
+image = work / "image"          # the image's root
+tree = image / "opt/pathlab"    # the tree, where both Dockerfiles put it
+helper = image / "usr/local/bin/pathlab-autolab-grade"
+sys.path.insert(0, str(root / "tools"))
+import pathlab_results  # noqa: E402
+import pathlab_tasks  # noqa: E402
+sys.path.insert(0, str(root / "tests/support"))
+from scratch_report import finish  # noqa: E402
+
+TASKS = pathlab_tasks.tasks(root)
+GRADING_UID = int(os.environ.get("PATHLAB_PLATFORMS_UID", "64995"))  # Tango's "autograde"
+TANGO_NPROC, TANGO_FSIZE, TANGO_OUTPUT = 100, 100 << 20, 1000 * 1024  # Tango's defaults
+PL_RESULTS_BYTES = 1 << 20
+failures = []
+
+
+def fail(message):
+    failures.append(message)
+
+
+def run(argv, what, timeout=1200, **kw):
+    t = time.time()
+    p = subprocess.run([str(a) for a in argv], capture_output=True, text=True, timeout=timeout, **kw)
+    print(f"  {what}: exit {p.returncode}, {time.time() - t:.0f} s", flush=True)
+    return p
+
+
+# ---------------------------------------------------------------- the image
+
+def make_image():
+    listed = subprocess.run(["git", "-C", root, "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
+                            capture_output=True, check=True).stdout.decode().split("\0")
+    for rel in filter(None, listed):
+        if (root / rel).is_file():
+            (tree / rel).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(root / rel, tree / rel)
+    env = dict(os.environ, PATHLAB_SKIP_APT="1", PATHLAB_IMAGE_PREFIX=str(image))
+    made = run(["bash", tree / "tools/autolab/image-setup"], "image: tools/autolab/image-setup", env=env)
+    if made.returncode != 0:
+        raise SystemExit(f"FAIL: the image's set-up failed:\n{made.stdout[-3000:]}{made.stderr[-3000:]}")
+    mode = helper.stat()
+    if not (mode.st_mode & 0o4000 and mode.st_uid == 0):
+        raise SystemExit(f"FAIL: {helper} is not setuid root")
+    # The image's folders are readable by Tango's grading user (a Dockerfile's COPY makes them so).
+    for folder in [image, *image.parents][:-1]:
+        if folder.stat().st_mode & 0o005 != 0o005:
+            raise SystemExit(f"FAIL: {folder} is not readable by others: the grading uid cannot reach the image")
+
+
+def task_files(kinds: dict) -> list:
+    """{task: "reference" | "stub" | path of a mutant} -> the files handed in."""
+    files = []
+    for n, kind in kinds.items():
+        folder, name = TASKS[n]
+        source = {"reference": root / "solutions" / folder / name, "stub": root / "tasks" / folder / name}.get(kind)
+        files.append((name, Path(source or kind)))
+    return files
+
+
+def direct_grade(files, tasks, name) -> dict:
+    """tools/grade on the same files, as root, the image's build, the sandbox the platform has (uid)."""
+    folder = work / "direct" / name
+    shutil.rmtree(folder, ignore_errors=True)
+    folder.mkdir(parents=True)
+    for file, source in files:
+        shutil.copy(source, folder / file)
+    out = work / "direct" / f"{name}.json"
+    graded = run([sys.executable, tree / "tools/grade", folder, "--tasks", ",".join(map(str, tasks)), "--out", out,
+                  "--build-dir", tree / "build-grade", "--sandbox", "uid"], f"tools/grade {name}")
+    if not out.exists():
+        raise SystemExit(f"FAIL: tools/grade wrote nothing for {name}:\n{graded.stderr[-2000:]}")
+    return pathlab_results.load(out)
+
+
+# ---------------------------------------------------------------- Autolab
+
+def tango_cut(output: bytes) -> bytes:
+    """What autodriver keeps of a job's output: all of it, or its first and last halves of the limit."""
+    if len(output) <= TANGO_OUTPUT:
+        return output
+    half = TANGO_OUTPUT // 2
+    return output[:half] + b"\n...[excess bytes elided]...\n" + output[-half:]
+
+
+def assessment(out: Path, tasks, per: str):
+    made = run([sys.executable, tree / "tools/autolab/make-autograder", out, "--tasks", ",".join(map(str, tasks)),
+                "--per", per, "--build-dir", tree / "build-grade"], f"make-autograder --tasks {tasks} --per {per}")
+    if made.returncode != 0:
+        raise SystemExit(f"FAIL: make-autograder:\n{made.stderr[-2000:]}")
+    name = "pathlab-tasks-" + "-".join(map(str, tasks))
+    with tarfile.open(out / f"{name}.tar") as tar:  # the tarball a TA imports into Autolab
+        tar.extractall(out / "imported")
+    folder = out / "imported" / name
+    yml = (folder / f"{name}.yml").read_text()
+    problems = [(json.loads(a), float(b)) for a, b in zip(
+        [l.split("name: ", 1)[1] for l in yml.splitlines() if l.startswith("- name: ")],
+        [l.split("max_score: ", 1)[1] for l in yml.splitlines() if l.startswith("  max_score: ")])]
+    handin = json.loads(next(l for l in yml.splitlines() if "handin_filename:" in l).split(": ", 1)[1])
+    timeout = int(next(l for l in yml.splitlines() if "autograde_timeout:" in l).split(": ", 1)[1])
+    colspec = json.loads(json.loads(next(l for l in yml.splitlines() if "colspec:" in l).split(": ", 1)[1]))
+    return folder, problems, handin, timeout, colspec["scoreboard"]
+
+
+def tango_job(folder, handin_name, timeout, files, kind):
+    """One job as Tango runs it; (the autoresult, the feedback)."""
+    job = work / "autolab" / f"job-{kind}"
+    shutil.rmtree(job, ignore_errors=True)
+    job.mkdir(parents=True)
+    shutil.copy(folder / "autograde-Makefile", job / "Makefile")
+    shutil.copy(folder / "autograde.tar", job / "autograde.tar")
+    if files is not None:
+        if handin_name.endswith(".zip"):
+            with zipfile.ZipFile(job / handin_name, "w") as z:
+                for name, source in files:
+                    z.write(source, name)
+        else:
+            shutil.copy(files[0][1], job / handin_name)
+    for path in [job, *job.rglob("*")]:
+        os.chown(path, GRADING_UID, GRADING_UID)
+    env = {"PATH": "/usr/bin:/bin", "LANG": "C.UTF-8", "PATHLAB_AUTOLAB_GRADE": str(helper),
+           "PATHLAB_SANDBOX": "uid"}  # Docker's seccomp denies bubblewrap's namespaces: the grader's uid mode
+    t = time.time()
+    try:
+        p = subprocess.run(["unshare", "--net", "setpriv", f"--reuid={GRADING_UID}", f"--regid={GRADING_UID}",
+                            "--clear-groups", "prlimit", f"--nproc={TANGO_NPROC}", f"--fsize={TANGO_FSIZE}", "--",
+                            "make"], cwd=job, env=env, capture_output=True, timeout=timeout)
+        output, code = tango_cut(p.stdout + p.stderr), p.returncode
+    except subprocess.TimeoutExpired:
+        fail(f"autolab {kind}: the job passed the assessment's timeout of {timeout} s")
+        return None, ""
+    text = output.decode(errors="replace")
+    (work / "autolab" / f"{kind}.feedback.txt").write_text(text)  # what the student reads, for a person to look at
+    print(f"  autolab {kind}: make exit {code}, {time.time() - t:.0f} s, {len(output)} bytes of feedback", flush=True)
+    last = text.rstrip("\n").rsplit("\n", 1)[-1]
+    try:
+        return json.loads(last), text
+    except ValueError:
+        fail(f"autolab {kind}: the last line is not the autoresult: {last[:300]!r}\n{text[-1500:]}")
+        return None, text
+
+
+def autoresult_problems(result, problems, columns, kind) -> bool:
+    """Autolab's autoresult: exactly the assessment's problems, each a number within its maximum, and
+    one number per scoreboard column."""
+    scores = result.get("scores") if isinstance(result, dict) else None
+    if not isinstance(scores, dict) or set(scores) != {name for name, _ in problems}:
+        fail(f"autolab {kind}: scores {sorted(scores or {})[:4]} are not the assessment's problems")
+        return False
+    for name, maximum in problems:
+        if not isinstance(scores[name], (int, float)) or not 0 <= scores[name] <= maximum:
+            fail(f"autolab {kind}: {name} scored {scores[name]!r} of {maximum}")
+            return False
+    board = result.get("scoreboard")
+    if not (isinstance(board, list) and len(board) == len(columns) and all(isinstance(v, (int, float)) for v in board)):
+        fail(f"autolab {kind}: scoreboard {board!r} does not have the columns {columns}")
+        return False
+    return True
+
+
+def check_autolab(three, single):
+    out = work / "autolab"
+    folder, problems, handin, timeout, columns = assessment(out, three, "task")
+    if handin != "handin.zip" or [p for p, _ in problems] != [f"Task {n}" for n in three]:
+        fail(f"autolab: handin {handin}, problems {problems}: not a zip and one problem per task")
+    maxima = dict(problems)
+    mutant_task = next(n for n in three if n != 3)
+    mutant = sorted((root / "tests/mutants" / TASKS[mutant_task][0]).glob("*.cpp"))[0]
+    stub_task = next(n for n in three if n not in (3, mutant_task))
+    cases = {"stubs": {n: "stub" for n in three}, "reference": {n: "reference" for n in three},
+             "half-done": {3: "reference", mutant_task: mutant, stub_task: "stub"}}
+    for kind, kinds in cases.items():
+        result, feedback = tango_job(folder, handin, timeout, task_files(kinds), kind)
+        if result is None or not autoresult_problems(result, problems, columns, kind):
+            continue
+        scores = result["scores"]
+        if kind == "stubs" and any(scores.values()):
+            fail(f"autolab stubs: {scores}, not 0 everywhere")
+        if kind == "reference" and scores != maxima:
+            fail(f"autolab reference: {scores}, not every maximum {maxima}")
+        if kind == "half-done":
+            graded = direct_grade(task_files(kinds), three, "autolab-half-done")
+            want = {f"Task {n}": e for n, (e, _) in pathlab_results.per_task(graded, three).items()}
+            board = {e["name"]: e["value"] for e in graded.get("leaderboard", [])}
+            if scores != want:
+                fail(f"autolab half-done: {scores}, tools/grade {want}")
+            if result["scoreboard"][0] != sum(want.values()) or len(result["scoreboard"]) != 2 or \
+                    abs(result["scoreboard"][1] - next(iter(board.values()), -1)) > 1e-9:
+                fail(f"autolab half-done: scoreboard {result['scoreboard']}, tools/grade's total "
+                     f"{sum(want.values())} and BVH cost {board}")
+            print(f"  autolab half-done: {scores} = tools/grade's; scoreboard {result['scoreboard']}")
+        for n in three:
+            if f"Task {n}: {scores[f'Task {n}']:g} of {maxima[f'Task {n}']:g} points" not in feedback:
+                fail(f"autolab {kind}: the feedback does not say task {n}'s points:\n{feedback[:1500]}")
+    result, feedback = tango_job(folder, handin, timeout, None, "missing-handin")
+    if result is not None and autoresult_problems(result, problems, columns, "missing-handin") and \
+            (any(result["scores"].values()) or "handin.zip" not in feedback):
+        fail(f"autolab missing handin: {result}, not 0 everywhere with the reason:\n{feedback[-800:]}")
+
+    # A problem per test, one task's file as the handin.
+    folder, problems, handin, timeout, columns = assessment(out / "per-test", [single], "test")
+    if handin != TASKS[single][1] or len(problems) < 2 or not all(p.startswith(f"Task {single}: ") for p, _ in problems):
+        fail(f"autolab per test: handin {handin}, problems {problems[:2]}")
+    mutant = sorted((root / "tests/mutants" / TASKS[single][0]).glob("*.cpp"))[-1]
+    for kind, kinds in (("per-test-reference", {single: "reference"}), ("per-test-mutant", {single: mutant})):
+        result, _ = tango_job(folder, handin, timeout, task_files(kinds), kind)
+        if result is None or not autoresult_problems(result, problems, columns, kind):
+            continue
+        want = dict(problems) if kind.endswith("reference") else \
+            {t["name"]: t["score"] for t in direct_grade(task_files(kinds), [single], kind)["tests"]}
+        if result["scores"] != want:
+            differ = [p for p in want if result["scores"].get(p) != want[p]]
+            fail(f"autolab {kind}: {len(differ)} problems differ from tools/grade's tests, e.g. {differ[:2]}")
+        else:
+            print(f"  autolab {kind}: {len(want)} problems, each tools/grade's test's points")
+
+
+# ---------------------------------------------------------------- PrairieLearn
+
+# PrairieLearn's results.json (docs.prairielearn.com, "External grading"): key -> (types, required).
+RESULTS_SCHEMA = {"gradable": (bool, False), "score": ((int, float), True), "message": (str, False),
+                  "output": (str, False), "format_errors": ((str, list), False), "images": (list, False),
+                  "tests": (list, False)}
+TEST_SCHEMA = {"name": (str, True), "description": (str, False), "points": ((int, float), False),
+               "max_points": ((int, float), False), "message": (str, False), "output": (str, False),
+               "images": (list, False)}
+
+
+def schema_problems(report: dict) -> list:
+    problems = []
+    for schema, item, where in [(RESULTS_SCHEMA, report, "results")] + \
+            [(TEST_SCHEMA, t, f"test {t.get('name')!r}") for t in report.get("tests", []) if isinstance(t, dict)]:
+        for key, value in item.items():
+            if key not in schema:
+                problems.append(f"{where}: unknown key {key!r}")
+            elif not isinstance(value, schema[key][0]) or isinstance(value, bool) != (schema[key][0] is bool):
+                problems.append(f"{where}: {key} is {type(value).__name__}")
+        problems += [f"{where}: no {key}" for key, (_, required) in schema.items() if required and key not in item]
+        for image in item.get("images", []):
+            url = image.get("url", "") if isinstance(image, dict) else ""
+            if not (url.startswith("data:image/png;base64,") and
+                    base64.b64decode(url.split(",", 1)[1])[:8] == b"\x89PNG\r\n\x1a\n"):
+                problems.append(f"{where}: an image that is not a PNG data URL")
+    if not 0 <= report.get("score", -1) <= 1:
+        problems.append(f"score {report.get('score')} is not in [0, 1]")
+    return problems
+
+
+def pl_job(question: Path, files, kind):
+    info = json.loads((question / "info.json").read_text())["externalGradingOptions"]
+    grade = work / "prairielearn" / f"grade-{kind}"
+    shutil.rmtree(grade, ignore_errors=True)
+    for sub in ("student", "serverFilesCourse", "data", "results"):
+        (grade / sub).mkdir(parents=True)
+    shutil.copytree(question / "tests", grade / "tests")
+    for name, source in files:
+        shutil.copy(source, grade / "student" / name)
+    (grade / "data/data.json").write_text(json.dumps({"params": {}, "correct_answers": {}, "submitted_answers": {
+        "_files": [{"name": n} for n, _ in files]}, "gradable": True}))
+    entrypoint = image / info["entrypoint"].lstrip("/")
+    env = {"PATH": "/usr/bin:/bin", "LANG": "C.UTF-8", "PL_GRADE_ROOT": str(grade), "PATHLAB_SANDBOX": "uid"}
+    t = time.time()
+    try:
+        subprocess.run(["unshare", "--net", str(entrypoint)], env=env, capture_output=True,
+                       timeout=info["timeout"])
+    except subprocess.TimeoutExpired:
+        fail(f"prairielearn {kind}: the job passed the question's timeout of {info['timeout']} s")
+        return None
+    out = grade / "results/results.json"
+    size = out.stat().st_size if out.exists() else 0
+    print(f"  prairielearn {kind}: {time.time() - t:.0f} s, results.json {size} bytes", flush=True)
+    if not out.exists() or size > PL_RESULTS_BYTES:
+        fail(f"prairielearn {kind}: results.json missing or over 1 MB ({size} bytes)")
+        return None
+    report = json.loads(out.read_text())
+    problems = schema_problems(report)
+    for p in problems[:5]:
+        fail(f"prairielearn {kind}: {p}")
+    return None if problems else report
+
+
+def check_prairielearn(tasks):
+    out = work / "prairielearn"
+    made = run([sys.executable, tree / "tools/prairielearn/make-course", out, "--tasks", ",".join(map(str, tasks))],
+               f"make-course --tasks {tasks}")
+    if made.returncode != 0:
+        raise SystemExit(f"FAIL: make-course:\n{made.stderr[-2000:]}")
+    for n in tasks:
+        question = out / "questions/pathlab" / TASKS[n][0]
+        info = json.loads((question / "info.json").read_text())
+        options = info.get("externalGradingOptions", {})
+        if not (info.get("gradingMethod") == "External" and options.get("enabled") and
+                options.get("entrypoint") == "/opt/pathlab/tools/prairielearn/run" and
+                0 < options.get("timeout", 0) <= 600 and options.get("enableNetworking") is False and
+                f'file-names="{TASKS[n][1]}"' in (question / "question.html").read_text()):
+            fail(f"prairielearn task {n}: info.json or question.html is not an external-graded upload of "
+                 f"{TASKS[n][1]}: {options}")
+        mutant = sorted((root / "tests/mutants" / TASKS[n][0]).glob("*.cpp"))[0]
+        for kind, files in (("stub", task_files({n: "stub"})), ("reference", task_files({n: "reference"})),
+                            ("mutant", task_files({n: mutant})),
+                            ("not-a-task-file", [("notes.txt", root / "README.md")])):
+            report = pl_job(question, files, f"task{n}-{kind}")
+            if report is None:
+                continue
+            if kind == "not-a-task-file":
+                if report.get("gradable") is not False or TASKS[n][1] not in report.get("message", ""):
+                    fail(f"prairielearn task {n}: a submission with no task file is not 'gradable: false' with "
+                         f"the file named: {report.get('gradable')}, {report.get('message')!r}")
+                continue
+            points = {t["name"]: (t["points"], t["max_points"]) for t in report["tests"]}
+            total = sum(p for p, _ in points.values()) / max(1, sum(m for _, m in points.values()))
+            if report.get("gradable") is not True or abs(report["score"] - total) > 1e-9:
+                fail(f"prairielearn task {n} {kind}: gradable {report.get('gradable')}, score {report['score']} "
+                     f"(its tests: {total})")
+            if kind == "stub" and (report["score"] != 0 or not any(t.get("images") for t in report["tests"])):
+                fail(f"prairielearn task {n} stub: score {report['score']}, or no failure picture inlined")
+            if kind == "reference" and report["score"] != 1:
+                fail(f"prairielearn task {n} reference: score {report['score']}")
+            graded = direct_grade(files, [n], f"prairielearn-task{n}-{kind}")
+            want = {t["name"]: (t["score"], t["max_score"]) for t in graded["tests"]}
+            if points != want:
+                fail(f"prairielearn task {n} {kind}: tests differ from tools/grade's: "
+                     f"{[k for k in want if points.get(k) != want[k]][:3]}")
+            else:
+                print(f"  prairielearn task {n} {kind}: score {report['score']:.3f}, {len(want)} tests, each "
+                      "tools/grade's points")
+            if kind == "stub":  # PrairieLearn's 1 MB rule, on 20 KB (the stub's are about 70): within it, same points
+                limit = 20_000
+                small = pathlab_results.prairielearn(graded, work / "direct", limit=limit)
+                kept = {t["name"]: (t["points"], t["max_points"]) for t in small["tests"]}
+                if len(json.dumps(small).encode()) > limit or kept != want or "left out" not in small["output"]:
+                    fail(f"prairielearn task {n}: results cut to {limit} bytes came to "
+                         f"{len(json.dumps(small).encode())}, or lost points, or did not say what was left out")
+
+
+def main() -> int:
+    start = time.time()
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    work.chmod(0o755)
+    make_image()
+    others = [n for n in TASKS if n != 3]
+    if os.environ.get("PATHLAB_PLATFORM_TASKS"):
+        drawn = pathlab_tasks.parse_task_list(os.environ["PATHLAB_PLATFORM_TASKS"], others, "PATHLAB_PLATFORM_TASKS")
+    else:
+        drawn = sorted(pathlab_tasks.commit_random("platforms", root).sample(others, 4))
+    print(f"tasks: Autolab {sorted([3] + drawn[:2])} (a problem per task) and {drawn[2]} (per test); "
+          f"PrairieLearn {drawn[2:4] if len(drawn) > 3 else drawn}")
+    check_autolab(sorted([3] + drawn[:2]), drawn[2 % len(drawn)])
+    check_prairielearn(drawn[2:4] if len(drawn) > 3 else drawn)
+    return finish("platforms", failures, work, keep, start,
+                  "Autolab and PrairieLearn gave tools/grade's points, in their own formats")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
