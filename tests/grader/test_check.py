@@ -171,7 +171,7 @@ def classroom(submission: Path, mine: dict) -> list:
                         f"tests differ: {[k for k in want if seen.get(k) != want[k]][:3]}")
     else:
         print(f"  classroom: {total:g} of {maximum:g} points in {len(runners)} runners, each test tools/check's")
-    if "Total" not in summary.read_text():
+    if f"### PathLab check: {mine['score']:g} of" not in summary.read_text():
         problems.append("classroom: the grade's table is not on the run's summary page")
     return problems
 

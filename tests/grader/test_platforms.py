@@ -37,7 +37,9 @@ no task file ("gradable": false, costing no attempt); results.json always
 under PrairieLearn's 1 MB and valid against the format the test carries
 (RESULTS_SCHEMA); the 1 MB rule itself on a lower limit.
 
-usage: test_platforms.py REPO_ROOT WORK_DIR [--keep]"""
+usage: test_platforms.py REPO_ROOT WORK_DIR [--keep]   (its scratch is a new folder in TMPDIR,
+outside the repository: the jobs' unprivileged uid must reach it while other grading tests make the
+repository private; WORK_DIR is unused)"""
 import base64
 import json
 import os
@@ -45,13 +47,17 @@ import shutil
 import subprocess
 import sys
 import tarfile
+import tempfile
 import time
 import zipfile
 from pathlib import Path
 
-root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
+root = Path(sys.argv[1]).resolve()
 keep = "--keep" in sys.argv[3:]
-work = work_dir / "platforms"
+# Outside the repository: the jobs run as an unprivileged uid, which must reach the image's files, and the
+# other grading tests make the repository private (mode 0700) while they grade.
+work = Path(tempfile.mkdtemp(prefix="pathlab-platforms-"))
+work.chmod(0o755)
 image = work / "image"          # the image's root
 tree = image / "opt/pathlab"    # the tree, where both Dockerfiles put it
 helper = image / "usr/local/bin/pathlab-autolab-grade"
@@ -89,6 +95,8 @@ def make_image():
             (tree / rel).parent.mkdir(parents=True, exist_ok=True)
             shutil.copy2(root / rel, tree / rel)
     env = dict(os.environ, PATHLAB_SKIP_APT="1", PATHLAB_IMAGE_PREFIX=str(image))
+    if "CCACHE_BASEDIR" in env:  # the compiler cache's paths relative to the image's tree, as to the repository's
+        env["CCACHE_BASEDIR"] = str(tree)
     made = run(["bash", tree / "tools/autolab/image-setup"], "image: tools/autolab/image-setup", env=env)
     if made.returncode != 0:
         raise SystemExit(f"FAIL: the image's set-up failed:\n{made.stdout[-3000:]}{made.stderr[-3000:]}")
@@ -172,7 +180,8 @@ def tango_job(folder, handin_name, timeout, files, kind):
     for path in [job, *job.rglob("*")]:
         os.chown(path, GRADING_UID, GRADING_UID)
     env = {"PATH": "/usr/bin:/bin", "LANG": "C.UTF-8", "PATHLAB_AUTOLAB_GRADE": str(helper),
-           "PATHLAB_SANDBOX": "uid"}  # Docker's seccomp denies bubblewrap's namespaces: the grader's uid mode
+           "PATHLAB_SANDBOX": "uid",  # Docker's seccomp denies bubblewrap's namespaces: the grader's uid mode
+           "PATHLAB_SANDBOX_UID": os.environ.get("PATHLAB_SANDBOX_UID", "")}  # its own beside other graders
     t = time.time()
     try:
         p = subprocess.run(["unshare", "--net", "setpriv", f"--reuid={GRADING_UID}", f"--regid={GRADING_UID}",
@@ -388,9 +397,7 @@ def check_prairielearn(tasks):
 
 def main() -> int:
     start = time.time()
-    shutil.rmtree(work, ignore_errors=True)
-    work.mkdir(parents=True)
-    work.chmod(0o755)
+    print(f"scratch: {work}")
     make_image()
     others = [n for n in TASKS if n != 3]
     if os.environ.get("PATHLAB_PLATFORM_TASKS"):
