@@ -8,34 +8,35 @@ tracked tree copied to IMAGE/opt/pathlab, then tools/autolab/image-setup
 (tools/install-grader's build, pathlab-autolab-grade installed setuid root
 in IMAGE/usr/local/bin; PATHLAB_SKIP_APT=1: the packages must be here).
 
-Autolab: tools/autolab/make-autograder makes an assessment of three tasks
-(task 3, for the scoreboard, and two drawn per commit; PATHLAB_PLATFORM_TASKS
-names them) with a problem per task, and one of a single drawn task with a
-problem per test. Each job runs as Tango runs it: the handin (named as the
+Two tasks other than 3 are drawn per commit (PATHLAB_PLATFORM_TASKS=A,B
+names them). Autolab: tools/autolab/make-autograder makes an assessment of
+task 3 (for the scoreboard) and A with a problem per task, and one of B with
+a problem per test. Each job runs as Tango runs it: the handin (named as the
 assessment's yml says), the autograde-Makefile as Makefile and autograde.tar
 in a job folder owned by an unprivileged uid, `make` run as that uid with
 Tango's limits (100 processes, 100 MB per file), no network, killed at the
 assessment's timeout, and its output cut to Tango's 1,000 KB as autodriver
 cuts it. Handins: the stubs (0 on every problem), the reference (every
-problem's maximum), a half-done one (the reference for task 3, a mutant for
-a second task, the stub for the third: each problem equal to tools/grade's
-points for that task on the same handin), a missing handin (0 everywhere),
-and, per test, the reference and a mutant of the single task. The last line
-must be Autolab's autoresult with exactly the yml's problems, none over its
-maximum, and the scoreboard's columns.
+problem's maximum), a half-done one (the reference for task 3, a mutant of
+A: each problem equal to tools/grade's points for that task on the same
+handin, the scoreboard its total and BVH cost), a missing handin (0
+everywhere), and, per test, B's reference and a mutant (each problem
+tools/grade's test). The last line must be Autolab's autoresult with
+exactly the yml's problems, none over its maximum, and the scoreboard's
+columns.
 
-PrairieLearn: tools/prairielearn/make-course makes a question per task for
-two drawn tasks; each job runs as PrairieLearn runs it: /grade (here a
-scratch folder, PL_GRADE_ROOT) with student/, tests/ (the question's),
-serverFilesCourse/, data/data.json and results/, the question's entrypoint
-run as root with no network, killed at its timeout. Submissions: the stub
-(score 0, its failure pictures inlined as PNG data URLs; and its results
-kept within 20 KB, pictures and outputs cut, with the same points, as they
-are within PrairieLearn's 1 MB), the reference
-(score 1), a mutant (each test's points equal tools/grade's), a file that is
-no task file ("gradable": false, costing no attempt); results.json always
-under PrairieLearn's 1 MB and valid against the format the test carries
-(RESULTS_SCHEMA); the 1 MB rule itself on a lower limit.
+PrairieLearn: tools/prairielearn/make-course makes B's question; each job
+runs as PrairieLearn runs it: /grade (here a scratch folder, PL_GRADE_ROOT)
+with student/, tests/ (the question's), serverFilesCourse/, data/data.json
+and results/, the question's entrypoint run as root with no network, killed
+at its timeout. Submissions (every test named and worth what B's judge
+lists): the stub (score 0, its failure pictures inlined as PNG data URLs,
+each test tools/grade's; and its results kept within 20 KB, pictures and
+outputs cut, with the same points, as they are within PrairieLearn's 1 MB),
+the reference (score 1, every test its maximum), a mutant (each test's
+points tools/grade's on the same file), a file that is no task file
+("gradable": false, costing no attempt); results.json always under 1 MB
+and valid against the format the test carries (RESULTS_SCHEMA).
 
 usage: test_platforms.py REPO_ROOT WORK_DIR [--keep]   (its scratch is a new folder in TMPDIR,
 outside the repository: the jobs' unprivileged uid must reach it while other grading tests make the
@@ -64,6 +65,7 @@ helper = image / "usr/local/bin/pathlab-autolab-grade"
 sys.path.insert(0, str(root / "tools"))
 import pathlab_results  # noqa: E402
 import pathlab_tasks  # noqa: E402
+from pathlab_grading import judge_manifest  # noqa: E402
 sys.path.insert(0, str(root / "tests/support"))
 from scratch_report import finish  # noqa: E402
 
@@ -220,17 +222,16 @@ def autoresult_problems(result, problems, columns, kind) -> bool:
     return True
 
 
-def check_autolab(three, single):
+def check_autolab(pair, single):
     out = work / "autolab"
-    folder, problems, handin, timeout, columns = assessment(out, three, "task")
-    if handin != "handin.zip" or [p for p, _ in problems] != [f"Task {n}" for n in three]:
+    folder, problems, handin, timeout, columns = assessment(out, pair, "task")
+    if handin != "handin.zip" or [p for p, _ in problems] != [f"Task {n}" for n in pair]:
         fail(f"autolab: handin {handin}, problems {problems}: not a zip and one problem per task")
     maxima = dict(problems)
-    mutant_task = next(n for n in three if n != 3)
+    mutant_task = next(n for n in pair if n != 3)
     mutant = sorted((root / "tests/mutants" / TASKS[mutant_task][0]).glob("*.cpp"))[0]
-    stub_task = next(n for n in three if n not in (3, mutant_task))
-    cases = {"stubs": {n: "stub" for n in three}, "reference": {n: "reference" for n in three},
-             "half-done": {3: "reference", mutant_task: mutant, stub_task: "stub"}}
+    cases = {"stubs": {n: "stub" for n in pair}, "reference": {n: "reference" for n in pair},
+             "half-done": {3: "reference", mutant_task: mutant}}
     for kind, kinds in cases.items():
         result, feedback = tango_job(folder, handin, timeout, task_files(kinds), kind)
         if result is None or not autoresult_problems(result, problems, columns, kind):
@@ -241,8 +242,8 @@ def check_autolab(three, single):
         if kind == "reference" and scores != maxima:
             fail(f"autolab reference: {scores}, not every maximum {maxima}")
         if kind == "half-done":
-            graded = direct_grade(task_files(kinds), three, "autolab-half-done")
-            want = {f"Task {n}": e for n, (e, _) in pathlab_results.per_task(graded, three).items()}
+            graded = direct_grade(task_files(kinds), pair, "autolab-half-done")
+            want = {f"Task {n}": e for n, (e, _) in pathlab_results.per_task(graded, pair).items()}
             board = {e["name"]: e["value"] for e in graded.get("leaderboard", [])}
             if scores != want:
                 fail(f"autolab half-done: {scores}, tools/grade {want}")
@@ -251,7 +252,7 @@ def check_autolab(three, single):
                 fail(f"autolab half-done: scoreboard {result['scoreboard']}, tools/grade's total "
                      f"{sum(want.values())} and BVH cost {board}")
             print(f"  autolab half-done: {scores} = tools/grade's; scoreboard {result['scoreboard']}")
-        for n in three:
+        for n in pair:
             if f"Task {n}: {scores[f'Task {n}']:g} of {maxima[f'Task {n}']:g} points" not in feedback:
                 fail(f"autolab {kind}: the feedback does not say task {n}'s points:\n{feedback[:1500]}")
     result, feedback = tango_job(folder, handin, timeout, None, "missing-handin")
@@ -379,8 +380,14 @@ def check_prairielearn(tasks):
                 fail(f"prairielearn task {n} stub: score {report['score']}, or no failure picture inlined")
             if kind == "reference" and report["score"] != 1:
                 fail(f"prairielearn task {n} reference: score {report['score']}")
-            graded = direct_grade(files, [n], f"prairielearn-task{n}-{kind}")
-            want = {t["name"]: (t["score"], t["max_score"]) for t in graded["tests"]}
+            listed = {f"Task {n}: {name}": points for name, points, _ in judge_manifest(tree / "build-grade", n)}
+            if {name: m for name, (_, m) in points.items()} != listed:
+                fail(f"prairielearn task {n} {kind}: its tests are not the judge's, or not worth what it lists")
+            if kind in ("stub", "mutant"):  # the stub's results are cut below; a mutant's points are partial
+                graded = direct_grade(files, [n], f"prairielearn-task{n}-{kind}")
+                want = {t["name"]: (t["score"], t["max_score"]) for t in graded["tests"]}
+            else:
+                want = {name: (m, m) for name, m in listed.items()}
             if points != want:
                 fail(f"prairielearn task {n} {kind}: tests differ from tools/grade's: "
                      f"{[k for k in want if points.get(k) != want[k]][:3]}")
@@ -404,11 +411,13 @@ def main() -> int:
     if os.environ.get("PATHLAB_PLATFORM_TASKS"):
         drawn = pathlab_tasks.parse_task_list(os.environ["PATHLAB_PLATFORM_TASKS"], others, "PATHLAB_PLATFORM_TASKS")
     else:
-        drawn = sorted(pathlab_tasks.commit_random("platforms", root).sample(others, 4))
-    print(f"tasks: Autolab {sorted([3] + drawn[:2])} (a problem per task) and {drawn[2]} (per test); "
-          f"PrairieLearn {drawn[2:4] if len(drawn) > 3 else drawn}")
-    check_autolab(sorted([3] + drawn[:2]), drawn[2 % len(drawn)])
-    check_prairielearn(drawn[2:4] if len(drawn) > 3 else drawn)
+        drawn = pathlab_tasks.commit_random("platforms", root).sample(others, 2)
+    if len(drawn) != 2:
+        raise SystemExit("PATHLAB_PLATFORM_TASKS: name two tasks other than 3")
+    print(f"tasks: Autolab {sorted([3, drawn[0]])} (a problem per task) and {drawn[1]} (per test); "
+          f"PrairieLearn {drawn[1]}")
+    check_autolab(sorted([3, drawn[0]]), drawn[1])
+    check_prairielearn([drawn[1]])
     return finish("platforms", failures, work, keep, start,
                   "Autolab and PrairieLearn gave tools/grade's points, in their own formats")
 
