@@ -13,10 +13,11 @@ pathlab_build=("${pathlab_core[@]}" git libembree-dev libglfw3-dev libimgui-dev 
 pathlab_writeup=(python3-markdown chromium)
 # The tests: the GUI on a virtual display (Xvfb, Mesa's software OpenGL) looked
 # at with ImageMagick, the grader's sandbox (bubblewrap; libseccomp for its uid mode's pathlab-confine), and
-# the write-up in a browser (Chromium; tidy validates its HTML, poppler-utils reads its PDF), and
-# ccache, which serves the nested builds of the grading tests (quickstart.sh).
+# the write-up in a browser (Chromium; tidy validates its HTML, poppler-utils reads its PDF),
+# ccache, which serves the nested builds of the grading tests (quickstart.sh), and a YAML reader
+# for the grading platforms' files (Autolab's assessment, GitHub Classroom's workflow).
 pathlab_test=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick bubblewrap libseccomp-dev "${pathlab_writeup[@]}" tidy
-              poppler-utils ccache)
+              poppler-utils ccache python3-yaml)
 # Grading: the core and the sandbox (bubblewrap; util-linux for setpriv, prlimit and ipcrm;
 # libseccomp for pathlab-confine, the uid mode's system-call filter).
 pathlab_grading=("${pathlab_core[@]}" bubblewrap util-linux libseccomp-dev)

@@ -38,6 +38,8 @@ import sys
 import time
 from pathlib import Path
 
+import yaml  # Debian's python3-yaml (tools/packages.sh, pathlab_test)
+
 root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
 keep = "--keep" in sys.argv[3:]
 prepare_only = "--prepare" in sys.argv[3:]
@@ -115,17 +117,18 @@ def classroom(submission: Path, mine: dict) -> list:
     runner's TASKN_RESULTS decoded (base64 JSON) and the points added up as it tells the classroom.
     Every test's points and the total must be tools/check's."""
     problems = []
-    workflow = (release / ".github/workflows/classroom.yml").read_text()
-    runners = re.search(r"^\s+runners: (\S+)$", workflow, re.M)
-    runners = runners.group(1).split(",") if runners else []
-    env = dict(re.findall(r'^\s+(TASK\d+_RESULTS): "\$\{\{ steps\.points\.outputs\.(task\d+) \}\}"$', workflow, re.M))
-    if not (workflow.startswith("# GitHub Classroom") and "\nname: Autograding Tests\n" in workflow and
-            "  run-autograding-tests:\n" in workflow and "uses: classroom-resources/autograding-grading-reporter@v1"
-            in workflow and runners == [f"task{n}" for n in CORE] and
-            env == {f"{r.upper()}_RESULTS": r for r in runners}):
+    workflow = yaml.safe_load((release / ".github/workflows/classroom.yml").read_text())
+    steps = workflow.get("jobs", {}).get("run-autograding-tests", {}).get("steps", [])
+    reporter = [s for s in steps if s.get("uses") == "classroom-resources/autograding-grading-reporter@v1"]
+    runners = reporter[0].get("with", {}).get("runners", "").split(",") if reporter else []
+    env = {k: re.fullmatch(r"\$\{\{ steps\.points\.outputs\.(task\d+) \}\}", v).group(1)
+           for k, v in (reporter[0].get("env", {}) if reporter else {}).items()}
+    if not (workflow.get("name") == "Autograding Tests" and len(reporter) == 1 and
+            runners == [f"task{n}" for n in CORE] and env == {f"{r.upper()}_RESULTS": r for r in runners}):
         return [f"classroom.yml: not GitHub Classroom's workflow for tasks {CORE} (runners {runners}, env {env})"]
-    runs = re.findall(r"^      - name: (.+)\n(?:        .*\n)*?        run: (.+)$", workflow, re.M)
-    if [name for name, _ in runs][:1] != ["Install"] or len(runs) != 3:
+    runs = [(s["name"], s["run"]) for s in steps if "run" in s]
+    if [name for name, _ in runs][:1] != ["Install"] or len(runs) != 3 or \
+            [s.get("id") for s in steps if "run" in s][2] != "points":
         return [f"classroom.yml: its run steps are not Install, the grade and the points: {runs}"]
     saved = {}
     for n in CORE:  # the student's files in their repository's tasks/ (the stubs put back after)

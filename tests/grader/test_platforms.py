@@ -53,6 +53,8 @@ import time
 import zipfile
 from pathlib import Path
 
+import yaml  # Debian's python3-yaml (tools/packages.sh, pathlab_test)
+
 root = Path(sys.argv[1]).resolve()
 keep = "--keep" in sys.argv[3:]
 # Outside the repository: the jobs run as an unprivileged uid, which must reach the image's files, and the
@@ -155,14 +157,15 @@ def assessment(out: Path, tasks, per: str):
     with tarfile.open(out / f"{name}.tar") as tar:  # the tarball a TA imports into Autolab
         tar.extractall(out / "imported")
     folder = out / "imported" / name
-    yml = (folder / f"{name}.yml").read_text()
-    problems = [(json.loads(a), float(b)) for a, b in zip(
-        [l.split("name: ", 1)[1] for l in yml.splitlines() if l.startswith("- name: ")],
-        [l.split("max_score: ", 1)[1] for l in yml.splitlines() if l.startswith("  max_score: ")])]
-    handin = json.loads(next(l for l in yml.splitlines() if "handin_filename:" in l).split(": ", 1)[1])
-    timeout = int(next(l for l in yml.splitlines() if "autograde_timeout:" in l).split(": ", 1)[1])
-    colspec = json.loads(json.loads(next(l for l in yml.splitlines() if "colspec:" in l).split(": ", 1)[1]))
-    return folder, problems, handin, timeout, colspec["scoreboard"]
+    yml = yaml.safe_load((folder / f"{name}.yml").read_text())  # Autolab reads it with a YAML parser too
+    problems = [(p["name"], float(p["max_score"])) for p in yml["problems"]]
+    colspec = json.loads(yml["scoreboard"]["colspec"])
+    if not (yml["general"]["name"] == name and isinstance(yml["autograder"]["autograde_timeout"], int) and
+            yml["autograder"]["autograde_image"] == "pathlab-autolab" and all(
+                set(p) == {"name", "description", "max_score", "optional"} for p in yml["problems"])):
+        fail(f"autolab: {name}.yml is not an assessment Autolab imports: {yml}")
+    return folder, problems, yml["general"]["handin_filename"], yml["autograder"]["autograde_timeout"], \
+        colspec["scoreboard"]
 
 
 def tango_job(folder, handin_name, timeout, files, kind):
