@@ -41,6 +41,8 @@ from pathlib import Path
 import yaml  # Debian's python3-yaml (tools/packages.sh, pathlab_test)
 
 root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
+sys.path.insert(0, str(root / "tests/support"))
+from scratch import finish  # noqa: E402
 keep = "--keep" in sys.argv[3:]
 prepare_only = "--prepare" in sys.argv[3:]
 graded = work_dir / "gradescope-results"
@@ -259,15 +261,8 @@ def main() -> int:
         failures.append(f"a task file using another task's helper: not task 2 full and task 4 0 "
                         f"with the linker's reason in the table:\n{output[-1500:]}")
 
-    for f in failures:
-        print("FAIL:", f)
-    if failures:
-        print(f"kept: {work}")
-        return 1
-    if not keep:
-        shutil.rmtree(work, ignore_errors=True)
-    print(f"student-check: {len(kinds)} submissions, the same score test by test as Gradescope's")
-    return 0
+    return finish("student-check", failures, work, keep, 0,
+                  f"{len(kinds)} submissions, the same score test by test as Gradescope's")
 
 
 if __name__ == "__main__":

@@ -41,7 +41,7 @@ SETUP_TIMEOUT, GRADE_TIMEOUT = 1200, 900
 sys.path.insert(0, str(root / "tools"))
 import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
 sys.path.insert(0, str(root / "tests/support"))
-from scratch_report import finish  # noqa: E402
+from scratch import finish  # noqa: E402
 ALL_TASKS = sorted(pathlab_tasks.tasks(root))
 VISIBILITIES = {"hidden", "after_due_date", "after_published", "visible"}
 # Graded here and by a student's tools/check (test_check.py): mistakes that

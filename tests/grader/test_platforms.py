@@ -69,7 +69,7 @@ import pathlab_results  # noqa: E402
 import pathlab_tasks  # noqa: E402
 from pathlab_grading import judge_manifest  # noqa: E402
 sys.path.insert(0, str(root / "tests/support"))
-from scratch_report import finish  # noqa: E402
+from scratch import copy_worktree, finish  # noqa: E402
 
 TASKS = pathlab_tasks.tasks(root)
 GRADING_UID = int(os.environ.get("PATHLAB_PLATFORMS_UID", "64995"))  # Tango's "autograde"
@@ -92,12 +92,7 @@ def run(argv, what, timeout=1200, **kw):
 # ---------------------------------------------------------------- the image
 
 def make_image():
-    listed = subprocess.run(["git", "-C", root, "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
-                            capture_output=True, check=True).stdout.decode().split("\0")
-    for rel in filter(None, listed):
-        if (root / rel).is_file():
-            (tree / rel).parent.mkdir(parents=True, exist_ok=True)
-            shutil.copy2(root / rel, tree / rel)
+    copy_worktree(root, tree)
     env = dict(os.environ, PATHLAB_SKIP_APT="1", PATHLAB_IMAGE_PREFIX=str(image))
     if "CCACHE_BASEDIR" in env:  # the compiler cache's paths relative to the image's tree, as to the repository's
         env["CCACHE_BASEDIR"] = str(tree)

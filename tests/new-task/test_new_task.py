@@ -42,7 +42,7 @@ from pathlib import Path
 root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
 keep = "--keep" in sys.argv[3:]
 sys.path.insert(0, str(root / "tests/support"))
-from scratch_report import finish  # noqa: E402
+from scratch import copy_worktree, finish  # noqa: E402
 work = work_dir / "new-task"
 copy = work / "repo"
 build = copy / "build"
@@ -70,14 +70,7 @@ def expect(condition, message):
 
 def copy_repository():
     """The working tree's files (tracked and untracked, .gitignore respected), committed in a new repository."""
-    listed = subprocess.run(["git", "-C", root, "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
-                            capture_output=True, check=True).stdout.decode().split("\0")
-    for rel in filter(None, listed):
-        source = root / rel
-        if source.is_file():
-            target = copy / rel
-            target.parent.mkdir(parents=True, exist_ok=True)
-            shutil.copy2(source, target)
+    copy_worktree(root, copy)
     git = ["git", "-c", "user.name=PathLab", "-c", "user.email=pathlab@example.invalid"]
     for argv in (["init", "-q"], ["add", "-A"], ["commit", "-q", "-m", "the course before its own task"]):
         run(git + argv, what="git " + argv[0])
