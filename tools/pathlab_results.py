@@ -66,11 +66,12 @@ def pictures(test: dict, folder: Path):
 # ---------------------------------------------------------------- Autolab
 
 def autolab_problems(manifests: dict, per: str) -> list:
-    """[(problem name, max score)] of an assessment, from the judges' manifests {task: [(test name, points)]}:
-    one problem per task ("Task 3"), or per test (the grader's test name), as the TA chooses."""
+    """[(problem name, max score)] of an assessment, from the judges' manifests {task: judge_manifest(...)}
+    ((test name, points, visibility) each): one problem per task ("Task 3"), or per test (the grader's test
+    name), as the TA chooses."""
     if per == "task":
-        return [(f"Task {n}", sum(points for _, points in cases)) for n, cases in sorted(manifests.items())]
-    return [(f"Task {n}: {name}", points) for n, cases in sorted(manifests.items()) for name, points in cases]
+        return [(f"Task {n}", sum(case[1] for case in cases)) for n, cases in sorted(manifests.items())]
+    return [(f"Task {n}: {name}", points) for n, cases in sorted(manifests.items()) for name, points, *_ in cases]
 
 
 def autolab(results: dict, problems: list, per: str, board_columns: list) -> dict:

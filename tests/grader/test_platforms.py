@@ -193,6 +193,8 @@ def tango_job(folder, handin_name, timeout, files, kind):
         return None, ""
     text = output.decode(errors="replace")
     (work / "autolab" / f"{kind}.feedback.txt").write_text(text)  # what the student reads, for a person to look at
+    if "WARNING" in text:  # e.g. the assessment's problems are not the image's judges' tests
+        fail(f"autolab {kind}: the job warned:\n{text[:1000]}")
     print(f"  autolab {kind}: make exit {code}, {time.time() - t:.0f} s, {len(output)} bytes of feedback", flush=True)
     last = text.rstrip("\n").rsplit("\n", 1)[-1]
     try:
