@@ -6,7 +6,8 @@ max_score, output), which is Gradescope's adapter. The other platforms'
 adapters (tools/autolab, tools/prairielearn, tools/classroom) reshape that
 file here and decide nothing: every point is copied from a grader's test,
 and each converter is checked against the results it came from (the tests
-under tests/grader/ compare them test by test)."""
+under tests/grader/ compare them test by test). A test whose visibility is
+not "visible" is never shown there (shown()), but its points still count."""
 import base64
 import json
 import re
@@ -51,6 +52,17 @@ def graded(results: dict) -> bool:
     return any(t["max_score"] > 0 for t in results["tests"])
 
 
+HIDDEN = "hidden tests"  # what a task's hidden tests are shown as, together: "Task 3: hidden tests"
+
+
+def shown(visibility) -> bool:
+    """Whether Autolab, PrairieLearn and GitHub Classroom show a test to students, by its visibility (results.json's
+    field, or a judge_manifest case's third item). Only "visible", or none (the grader's default), is: these
+    platforms cannot release one test later as Gradescope does, so "after_due_date" and "after_published" stay
+    hidden there like "hidden" (and so does anything unknown). A hidden test's points still count, unnamed."""
+    return visibility in (None, "visible")
+
+
 def pictures(test: dict, folder: Path):
     """The failure pictures a test's output names ("pictures: DIR/a.png, DIR/b.png (...)"), as found on disk."""
     found = []
@@ -68,10 +80,17 @@ def pictures(test: dict, folder: Path):
 def autolab_problems(manifests: dict, per: str) -> list:
     """[(problem name, max score)] of an assessment, from the judges' manifests {task: judge_manifest(...)}
     ((test name, points, visibility) each): one problem per task ("Task 3"), or per test (the grader's test
-    name), as the TA chooses."""
+    name), as the TA chooses. Per test, a task's hidden tests are one problem, "Task 3: hidden tests", worth
+    their sum: students see the problems' names."""
     if per == "task":
         return [(f"Task {n}", sum(case[1] for case in cases)) for n, cases in sorted(manifests.items())]
-    return [(f"Task {n}: {name}", points) for n, cases in sorted(manifests.items()) for name, points, *_ in cases]
+    problems = []
+    for n, cases in sorted(manifests.items()):
+        problems += [(f"Task {n}: {name}", points) for name, points, visibility in cases if shown(visibility)]
+        hidden = [points for _, points, visibility in cases if not shown(visibility)]
+        if hidden:
+            problems.append((f"Task {n}: {HIDDEN}", sum(hidden)))
+    return problems
 
 
 def autolab(results: dict, problems: list, per: str, board_columns: list) -> dict:
@@ -81,8 +100,11 @@ def autolab(results: dict, problems: list, per: str, board_columns: list) -> dic
     value; 0 where the grader gave none, e.g. task 3 not done)."""
     if per == "task":
         earned = {f"Task {n}": e for n, (e, _) in per_task(results, [int(p.split()[1]) for p, _ in problems]).items()}
-    else:
-        earned = {t["name"]: t["score"] for t in results["tests"]}
+    else:  # a hidden test scores in its task's "hidden tests" problem (autolab_problems)
+        earned = {}
+        for t in results["tests"]:
+            name = t["name"] if shown(t.get("visibility")) else f"Task {task_of(t)}: {HIDDEN}"
+            earned[name] = earned.get(name, 0) + t["score"]
     scores = {name: earned.get(name, 0) for name, _ in problems}
     board = {e["name"]: e["value"] for e in results.get("leaderboard", [])}
     scoreboard = [sum(scores.values()) if column == "total" else board.get(column, 0) for column in board_columns]
@@ -95,18 +117,25 @@ PRAIRIELEARN_BYTES = 1 << 20  # PrairieLearn's limit on results.json
 
 
 def prairielearn(results: dict, pictures_folder: Path, limit: int = PRAIRIELEARN_BYTES) -> dict:
-    """PrairieLearn's results.json: score in [0, 1], a test per grader test (points, max_points, message,
-    output), and the failure pictures inlined as data URLs while the file stays under `limit` bytes
-    (outputs are clipped first if even the text would not fit). gradable is false when the grader found
-    no task file or failed itself: PrairieLearn then does not count the attempt."""
+    """PrairieLearn's results.json: score in [0, 1], a test per visible grader test (points, max_points,
+    message, output), and the failure pictures inlined as data URLs while the file stays under `limit` bytes
+    (outputs are clipped first if even the text would not fit). The hidden tests (shown()) count in the score
+    and are one last test, "hidden tests", with their points summed and nothing else of theirs. gradable is
+    false when the grader found no task file or failed itself: PrairieLearn then does not count the attempt."""
     possible = sum(t["max_score"] for t in results["tests"])
     earned = sum(t["score"] for t in results["tests"])
+    visible = [t for t in results["tests"] if shown(t.get("visibility"))]
+    hidden = [t for t in results["tests"] if not shown(t.get("visibility"))]
     tests = []
-    for t in results["tests"]:
+    for t in visible:
         hints = [line for line in t.get("output", "").splitlines() if line.startswith("HINT")]
         tests.append({"name": t["name"], "points": t["score"], "max_points": t["max_score"],
                       "message": "passed" if t["score"] >= t["max_score"] else "\n".join(hints) or "failed",
                       "output": t.get("output", "")})
+    if hidden:  # so that the tests still add up to the score
+        tests.append({"name": HIDDEN, "points": sum(t["score"] for t in hidden),
+                      "max_points": sum(t["max_score"] for t in hidden), "output": "",
+                      "message": f"Tests not shown: {len(hidden)}. Their points count in the score."})
     report = {"gradable": graded(results), "score": earned / possible if possible else 0.0,
               "message": results.get("output", "").splitlines()[0] if results.get("output") else "",
               "output": results.get("output", ""), "tests": tests}
@@ -120,7 +149,7 @@ def prairielearn(results: dict, pictures_folder: Path, limit: int = PRAIRIELEARN
         longest["output"] = longest["output"][:len(longest["output"]) // 2] + "\n[... clipped to fit PrairieLearn's 1 MB]"
     # Then pictures, test by test, each while it fits.
     left_out = 0
-    for test, source in zip(report["tests"], results["tests"]):
+    for test, source in zip(report["tests"], visible):  # a hidden test's pictures never: "hidden tests" is last
         for path in pictures(source, pictures_folder):
             images = test.setdefault("images", [])
             images.append({"label": path.name,
@@ -140,14 +169,21 @@ def prairielearn(results: dict, pictures_folder: Path, limit: int = PRAIRIELEARN
 def classroom(results: dict, tasks) -> dict:
     """{"taskN": base64 JSON} for GitHub Classroom's grading reporter (classroom-resources/
     autograding-grading-reporter): one runner per task, its max_score the task's points and a test per
-    grader test with its score; the reporter adds the runners' scores up and reports them to the classroom."""
+    visible grader test with its score, the task's hidden tests (shown()) one more, "Task N: hidden tests",
+    with their score summed and no message; the reporter adds the runners' scores up and reports them to
+    the classroom."""
+    passed = lambda t: t["score"] >= t["max_score"]
     out = {}
     for n in tasks:
         mine = [t for t in results["tests"] if task_of(t) == n]
+        hidden = [t for t in mine if not shown(t.get("visibility"))]
+        tests = [{"name": t["name"], "status": "pass" if passed(t) else "fail", "score": t["score"],
+                  "message": "" if passed(t) else t.get("output", "")[-2000:]}
+                 for t in mine if shown(t.get("visibility"))]
+        if hidden:
+            tests.append({"name": f"Task {n}: {HIDDEN}", "status": "pass" if all(map(passed, hidden)) else "fail",
+                          "score": sum(t["score"] for t in hidden), "message": ""})
         payload = {"version": 1, "max_score": sum(t["max_score"] for t in mine),
-                   "status": "pass" if all(t["score"] >= t["max_score"] for t in mine) else "fail",
-                   "tests": [{"name": t["name"], "status": "pass" if t["score"] >= t["max_score"] else "fail",
-                              "score": t["score"], "message": "" if t["score"] >= t["max_score"] else
-                              t.get("output", "")[-2000:]} for t in mine]}
+                   "status": "pass" if all(map(passed, mine)) else "fail", "tests": tests}
         out[f"task{n}"] = base64.b64encode(json.dumps(payload).encode()).decode()
     return out
