@@ -15,9 +15,10 @@ pathlab_writeup=(python3-markdown chromium)
 # at with ImageMagick, the grader's sandbox (bubblewrap; libseccomp for its uid mode's pathlab-confine), and
 # the write-up in a browser (Chromium; tidy validates its HTML, poppler-utils reads its PDF),
 # ccache, which serves the nested builds of the grading tests (quickstart.sh), and a YAML reader
-# for the grading platforms' files (Autolab's assessment, GitHub Classroom's workflow).
+# for the grading platforms' files (Autolab's assessment, GitHub Classroom's workflow), and strace, which
+# lists every program a grade runs outside its sandbox (docs/threat-model.md).
 pathlab_test=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick bubblewrap libseccomp-dev "${pathlab_writeup[@]}" tidy
-              poppler-utils ccache python3-yaml)
+              poppler-utils ccache python3-yaml strace)
 # Grading: the core and the sandbox (bubblewrap; util-linux for setpriv, prlimit and ipcrm;
 # libseccomp for pathlab-confine, the uid mode's system-call filter).
 pathlab_grading=("${pathlab_core[@]}" bubblewrap util-linux libseccomp-dev)

@@ -19,7 +19,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
-from pathlab_run import clip as clip_to, run  # noqa: E402
+from pathlab_run import clip as clip_to, link_command, run  # noqa: E402
 from pathlab_sandbox import JUDGE_MEMORY, MemoryWatch  # noqa: E402
 from pathlab_include_rule import LAYERS, canonical, files_read, system_include_dirs  # noqa: E402
 from pathlab_submission import find_task_files, unpack_zip  # noqa: E402
@@ -32,6 +32,7 @@ MAX_TASK_FILE = 1 << 20      # a task file larger than 1 MB is refused
 TEST_TIMEOUT = 60.0          # seconds per test case
 TASK_BUDGET = 300.0          # seconds for one task: compiling and all its tests
 SUBMISSION_BUDGET = 1200.0   # seconds for the whole submission
+TOOL_CPU_SECONDS = 120       # CPU seconds of one compiler or linker run in the sandbox
 
 
 def clip(text: str, limit: int = OUTPUT_LIMIT) -> str:
@@ -104,6 +105,7 @@ class Grader:
         self.verdicts = Path(tempfile.mkdtemp(prefix="verdicts-", dir=self.work))  # 0700: the judge's only
         self.sandbox = sandbox
         self.isolation_checked = False
+        self.link_recipes = {}  # task: link_recipe(task)
         # The judge's memory limit (pathlab_sandbox.JUDGE_MEMORY); not under
         # sanitizers, whose shadow memory is the judge's own memory too.
         self.judge_memory = None if getattr(args, "sanitize", "") else JUDGE_MEMORY
@@ -201,8 +203,8 @@ class Grader:
         if code != 0:
             raise RuntimeError("configuring the grader's build failed:\n" + clip(out))
 
-    def build_target(self, target):
-        code, out = run(["cmake", "--build", str(self.build), "--target", target,
+    def build_target(self, *targets):
+        code, out = run(["cmake", "--build", str(self.build), "--target", *targets,
                          "--parallel", str(os.cpu_count() or 2)])
         return code == 0, out
 
@@ -248,22 +250,7 @@ class Grader:
             command.append(arg)
         command += pathlab_tasks.SUBMISSION_FLAGS
         source_inside = inside(task_dir / file_name)
-        limits = dict(writable=out, cpu_seconds=120)
-
-        def step(arguments, longest):
-            """One compiler run, within the time left; (exit code, output, why it stopped or "")."""
-            left = min(longest, deadline - time.time())
-            if left < 1:
-                return None, "", "the time budget was used up before compiling finished"
-            with self.watch() as watch:
-                code, output = run(self.sandbox.command(arguments, scratch, **limits), timeout=left)
-            if watch.exceeded:
-                return None, output, "compiling " + watch.message()
-            if code is None:
-                return None, output, (f"compiling took longer than {left:.0f} s" +
-                                      (" (the time budget)" if left < longest else ""))
-            return code, output, ""
-
+        step = lambda arguments, longest: self.run_in_sandbox(arguments, scratch, out, longest, deadline, "compiling")
         # 1. The preprocessor alone: which files does the source read? Asked of
         # the compiler, so no spelling (digraphs, line splices, macros that
         # build a path) escapes. Only the framework's headers and the
@@ -316,6 +303,98 @@ class Grader:
             return None, f"{file_name} did not assemble:\n" + clip(output)
         return obj, ""
 
+    def run_in_sandbox(self, arguments, scratch, out, longest, deadline, what):
+        """One untrusted tool run (the compiler, the linker) in the sandbox, `out` its only writable folder,
+        within `longest` seconds and the time left before `deadline`: (exit code, output, why it stopped or "")."""
+        left = min(longest, deadline - time.time())
+        if left < 1:
+            return None, "", f"the time budget was used up before {what} finished"
+        with self.watch() as watch:
+            code, output = run(self.sandbox.command(arguments, scratch, writable=out, cpu_seconds=TOOL_CPU_SECONDS),
+                               timeout=left)
+        if watch.exceeded:
+            return None, output, f"{what} " + watch.message()
+        if code is None:
+            return None, output, f"{what} took longer than {left:.0f} s" + (" (the time budget)" if left < longest else "")
+        return code, output, ""
+
+    def link_recipe(self, task):
+        """How the candidate of `task` is linked: (argv, inputs), the link command the build system would run
+        for candidate-NN-submission (read from build.ninja, never run by the host: the sandbox links, in
+        link_in_sandbox) and the files of the build folder it reads (the framework's libraries, the request
+        loop, the suite's calls, the other tasks' reference objects), built here from the grader's own sources.
+        The submission's object appears in argv as its placeholder path, the output as -o's argument."""
+        if task in self.link_recipes:
+            return self.link_recipes[task]
+        directory, _ = TASKS[task]
+        argv = link_command(self.build, f"candidate-{directory}-submission")
+        output = argv[argv.index("-o") + 1]
+        placeholder = (self.objects / f"task-{task}.o").resolve()
+        inputs = [a for a in argv[1:] if not a.startswith("-") and a != output and not Path(a).is_absolute()
+                  and (self.build / a).resolve() != placeholder]
+        if not any((self.build / a).resolve() == placeholder for a in argv) or not inputs:
+            raise RuntimeError(f"the link of candidate-{directory}-submission does not name {placeholder}")
+        ok, out = self.build_target(*inputs)
+        if not ok:
+            raise RuntimeError(f"building the parts of candidate-{directory}-submission failed:\n" + clip(out))
+        self.link_recipes[task] = argv, inputs
+        return argv, inputs
+
+    def link_in_sandbox(self, task, obj: Path, deadline: float):
+        """The candidate linked from the submission's object `obj` in the sandbox, as the compiler ran: the
+        linker (and anything it would start: GCC's LTO plugin reads sections of the object) acts on bytes
+        the student controls, so it runs as the sandbox uid, within the task's time, its output in obj's
+        folder. (candidate path or None, message)."""
+        directory, file_name = TASKS[task]
+        argv, inputs = self.link_recipe(task)
+        scratch = Path(tempfile.mkdtemp(prefix=f"link-{task}-", dir=self.work))
+        os.chmod(scratch, 0o755)
+        for name in inputs:  # the grader's files, copied: the sandbox reads neither the build nor the repository
+            (scratch / name).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copyfile(self.build / name, scratch / name)
+        out = obj.parent
+        candidate = out / "candidate"
+        placeholder = (self.objects / f"task-{task}.o").resolve()
+        output = argv[argv.index("-o") + 1]
+        # The driver's temporary files go to `out` (uid mode closes /tmp to the sandbox uid).
+        command = ["/usr/bin/env", f"TMPDIR={self.sandbox.out_path(out, out)}",
+                   os.path.realpath(shutil.which(argv[0]) or argv[0])]
+        for arg in argv[1:]:
+            if arg == output:
+                arg = self.sandbox.out_path(out, candidate)
+            elif arg in inputs:
+                arg = self.sandbox.path(scratch, scratch / arg)
+            elif not arg.startswith("-") and (self.build / arg).resolve() == placeholder:
+                arg = self.sandbox.out_path(out, obj)
+            command.append(arg)
+        # No link-time optimisation: nothing in the object may start a compiler at link time.
+        command += ["-fno-lto"] + (["-fno-use-linker-plugin"] if "clang" not in Path(command[2]).name else [])
+        code, output_text, stopped = self.run_in_sandbox(command, scratch, out, 120, deadline, "linking")
+        shutil.rmtree(scratch, ignore_errors=True)
+        if stopped:
+            return None, f"{file_name} was not linked: {stopped}."
+        if code != 0 or not candidate.exists():
+            # The linker's own lines (the command line names the grader's folders).
+            said = [l for l in output_text.splitlines()
+                    if re.search(r"undefined reference|multiple definition|ld: |error:", l)]
+            return None, (f"{file_name} did not link on its own (the reference for the other tasks, the "
+                          "framework): does it use a function written in another task's file?\n" +
+                          clip("\n".join(said) if said else output_text))
+        return candidate, ""
+
+    def link_candidate(self, task, obj: Path, deadline: float):
+        """(the linked candidate or None, message). In the sandbox (link_in_sandbox); only tools/check on
+        Windows, with no sandbox and the student's own bytes on the student's own machine, lets the build
+        system link (its link lines there are not the POSIX ones link_recipe reads)."""
+        if os.name != "nt":
+            return self.link_in_sandbox(task, obj, deadline)
+        directory, file_name = TASKS[task]
+        (self.objects / f"task-{task}.o").write_bytes(obj.read_bytes())
+        ok, out = self.build_target(f"candidate-{directory}-submission")
+        if not ok:
+            return None, f"{file_name} did not link on its own:\n" + clip(out)
+        return self.build / "tests" / f"candidate-{directory}-submission.exe", ""
+
     def system_dirs(self, compiler, arguments):
         if not hasattr(self, "_system_dirs"):
             self._system_dirs = system_include_dirs(compiler, arguments)
@@ -341,20 +420,15 @@ class Grader:
         if obj is None:
             self.fail_all(task, cases, message)
             return
-        (self.objects / f"task-{task}.o").write_bytes(obj.read_bytes())
         self.say(f"task {task}: linking", progress=True)
-        ok, out = self.build_target(f"candidate-{directory}-submission")
-        if not ok:
-            # The linker's own lines (the build's command lines name the grader's folders).
-            said = [l for l in out.splitlines() if re.search(r"undefined reference|multiple definition|ld: |error:", l)]
-            self.fail_all(task, cases, f"{file_name} did not link on its own (the reference for the other tasks, "
-                          "the framework): does it use a function written in another task's file?\n" +
-                          clip("\n".join(said) if said else out))
+        linked, message = self.link_candidate(task, obj, task_deadline)
+        if linked is None:
+            self.fail_all(task, cases, message)
             return
         run_dir = Path(tempfile.mkdtemp(prefix=f"run-{task}-", dir=self.work))
         os.chmod(run_dir, 0o755)
         candidate = run_dir / ("candidate" + (".exe" if os.name == "nt" else ""))
-        shutil.copy(self.build / "tests" / f"candidate-{directory}-submission{candidate.suffix}", candidate)
+        shutil.copy(linked, candidate)
         cpu = max(10.0, self.args.timeout + 5)
         command = self.sandbox.command([self.sandbox.path(run_dir, candidate)], run_dir, cpu_seconds=cpu)
         launcher = candidate  # unsandboxed: the judge starts the candidate itself

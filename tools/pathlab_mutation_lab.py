@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pathlab_tasks
 from pathlab_mutants import Mutant
+from pathlab_run import link_command
 
 ROOT = Path(__file__).resolve().parent.parent
 REVIEWED = ROOT / "tests" / "mutants" / "survivors.txt"
@@ -113,12 +114,7 @@ class Lab:
             raise SystemExit(f"tools/mutate: {self.build} does not compile {solution} (configure with the reference)")
         compile_argv = shlex.split(entry["command"])
         reference_object = compile_argv[compile_argv.index("-o") + 1]
-        lines = subprocess.run(["ninja", "-C", str(self.build), "-t", "commands", candidate],
-                               capture_output=True, text=True, check=True).stdout.strip().splitlines()
-        link = lines[-1].strip()
-        link = re.sub(r"^:\s*&&\s*", "", link)
-        link = re.sub(r"\s*&&\s*:$", "", link)
-        link_argv = shlex.split(link)
+        link_argv = link_command(self.build, candidate)
         if reference_object not in link_argv:
             raise SystemExit(f"tools/mutate: the link of {candidate} does not name {reference_object}")
         digest = hashlib.sha256()

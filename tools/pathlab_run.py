@@ -2,7 +2,9 @@
 its output kept within bounds from both ends, its time and memory limited,
 and the processes it leaves behind reaped."""
 import os
+import re
 import selectors
+import shlex
 import signal
 import subprocess
 import time
@@ -141,3 +143,13 @@ def reap_orphans() -> None:
             return
         if pid == 0:
             return
+
+
+def link_command(build: Path, target: str):
+    """The link line Ninja would run for `target` of `build` (its last command, `ninja -t commands`), as a
+    list to run in `build`: read from build.ninja, nothing is built or run."""
+    code, listing = run(["ninja", "-C", str(build), "-t", "commands", target], timeout=120)
+    lines = listing.strip().splitlines()
+    if code != 0 or not lines:
+        raise RuntimeError(f"no link command for {target} in {build}:\n{clip(listing, 2000)}")
+    return shlex.split(re.sub(r"\s*&&\s*:$", "", re.sub(r"^:\s*&&\s*", "", lines[-1].strip())))

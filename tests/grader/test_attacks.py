@@ -4,13 +4,17 @@ Each attack is a task file (task 1's, or the task its "task: NN" names):
 the stub (or the reference, for an attack that also does the work
 honestly; or nothing, "base: none") with the attack appended, after any
 shared part it names with "uses: FILE" (protocol-hijack.inc: the candidate's
-side of the judge's protocol, taken over). The attack knows the
+side of the judge's protocol, taken over). "expect:" says what it must score:
+"0", "full" (the reference's work), or a number of points N, for an attack
+that does part of the work honestly to reach the tests it lies to (a tree it
+really builds): N is what that honest part earns alone, measured with the
+attack's lies turned off, as its comment says. The attack knows the
 real paths of the repository, the build and results.json (@ROOT@, @BUILD@,
 @OUT@: the worst case) and of listeners this script keeps open (@PORT@ on
 127.0.0.1, the abstract Unix socket @ABSTRACT@). Every attack must score
 exactly what its honest work earns (0 on the stub, full marks on the
-reference), and after each grade: the reference never appears in
-results.json, the repository's tracked files and the judge are unchanged, no
+reference, N for an honest part), and after each grade: the reference never
+appears in results.json, the repository's tracked files and the judge are unchanged, no
 process of the sandbox is left (looked at twice, a second apart), nothing of
 the sandbox's is left in any world-writable folder or as a System V IPC
 object, nothing reached the listeners, results.json is not rewritten later,
@@ -41,6 +45,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
 import pathlab_tasks  # noqa: E402
+from pathlab_adversary import compile_argv, lto_sections  # noqa: E402
 from pathlab_tasks import commit_random  # noqa: E402
 
 root, build, grade_build = (Path(a).resolve() for a in sys.argv[1:4])
@@ -239,7 +244,8 @@ def main() -> int:
     judges_before, full_points = {1: judge_digest()}, {1: full}
     for attack in attacks:
         text = attack.read_text()
-        header = re.search(r"// (?:task: (\d+)\s+)?base: (\w+)\s+expect: (\w+)(?:\s+uses: (\S+))?", text)
+        header = re.search(r"// (?:task: (\d+)\s+)?base: (\w+)\s+expect: (\w+)(?:\s+uses: (\S+))?(?:\s+lto: (\S+))?",
+                           text)
         task, base, expect, uses = int(header.group(1) or 1), header.group(2), header.group(3), header.group(4)
         if task not in full_points:
             full_points[task] = judge_points(task)
@@ -251,6 +257,11 @@ def main() -> int:
         values = {"@ROOT@": str(root), "@BUILD@": str(grade_build), "@OUT@": str(out), "@LEAK@": str(LEAK_FILE),
                   "@PORT@": str(tcp.server.getsockname()[1]), "@ABSTRACT@": abstract_name}
         body = re.sub("|".join(values), lambda m: values[m.group(0)], text)
+        if header.group(5):
+            ir = (root / "tasks" / directory / file_name).read_text() + "\n" + \
+                re.sub("|".join(values), lambda m: values[m.group(0)], (attack.parent / header.group(5)).read_text())
+            body = body.replace("@LTO_SECTIONS@", lto_sections(ir, compile_argv(grade_build, task),
+                                                               work / f"{attack.stem}-ir"))
         prefix = "" if base == "none" else \
             (root / ("solutions" if base == "reference" else "tasks") / directory / file_name).read_text()
         submission = work / attack.stem
@@ -286,7 +297,7 @@ def main() -> int:
             digest = hashlib.sha256(report_text.encode()).hexdigest()
             report = json.loads(report_text)
             points = sum(t["max_score"] for t in report["tests"])
-            wanted = points if expect == "full" else 0
+            wanted = points if expect == "full" else int(expect)  # "0", or an honest part's N points
             if points != full_points[task]:
                 problems.append(f"the task's manifest changed: {points} points instead of {full_points[task]}")
             if report["score"] != wanted:
