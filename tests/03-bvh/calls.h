@@ -45,17 +45,19 @@ struct BvhShape {
 };
 // A traversal whose primitive tests the judge serves: the candidate's leaf
 // geometry asks the judge for each one (the ray's index, the slot and the
-// range: three uint32_t and an Interval; the reply an optional PrimitiveHit,
+// range: two uint32_t and an Interval; the reply an optional PrimitiveHit,
 // the judge's own test), so the judge knows every slot each traversal
-// tested. Per ray: whether it found a hit (intersectAny: was blocked), and
-// the traversal's own statistics.
+// tested and every hit it was told of. Per ray: whether it found a hit
+// (intersectAny: was blocked), and the traversal's own statistics: claims,
+// which the tests judge by the judge's record (a hit claimed must be one the
+// judge served; the work counted must be the work the judge served).
 using ServedResult = std::tuple<bool, TraversalStats>;
 PATHLAB_REMOTE_CALL(IntersectBox, 1, shape::Fixed, std::optional<float>(Aabb, Ray, Vec3, Interval));
 PATHLAB_REMOTE_CALL(BuildBvh, 2, BvhShape, Bvh(std::vector<Aabb>));
 PATHLAB_REMOTE_CALL(IntersectClosest, 3, shape::OnePer<2>, std::vector<ClosestResult>(Bvh, Scene, std::vector<RayInRange>));
 PATHLAB_REMOTE_CALL(IntersectAny, 4, shape::OnePer<2>, std::vector<AnyResult>(Bvh, Scene, std::vector<RayInRange>));
-// The slots each ray's traversal tested, as the leaf geometry records them
-// (the framework's log, not the candidate's own count): closest hit, or any hit.
+// Each ray's traversal, closest hit or any hit, with its primitive tests served
+// by the judge (candidate::traverseServed records them: not the candidate's own count).
 PATHLAB_REMOTE_CALL(TraverseServed, 5, shape::OnePer<2>, std::vector<ServedResult>(Bvh, Scene, std::vector<RayInRange>, bool));
 }  // namespace pathlab::calls
 
@@ -88,11 +90,43 @@ inline bool intersectAny(const Bvh& bvh, const Scene& scene, const Ray& ray, Int
 
 // A traversal of each ray (intersectAny with anyHit, else intersectClosest)
 // whose primitive tests the judge served, and what the judge saw of it.
-struct ServedTraversal {
-  bool found = false;             // what the traversal returned: a hit, or blocked
-  TraversalStats stats;           // what it counted
-  std::vector<uint32_t> tested;   // the slots it tested, in order: the judge's own count
+struct ServedTest {
+  uint32_t slot = 0;                // the slot the traversal asked the judge to test
+  Interval range;                   // with the range it asked with
+  std::optional<PrimitiveHit> hit;  // and the judge's own answer (its test of that slot, within that range)
 };
+struct ServedTraversal {
+  bool found = false;             // what the traversal returned: a hit, or blocked (its claim)
+  TraversalStats stats;           // what it counted (its claim)
+  std::vector<ServedTest> served;  // the tests the judge served it, in order: the judge's own record
+  size_t tested() const { return served.size(); }
+  // The judge's closest hit among those it served within `range` (the ray's own), if any.
+  std::optional<PrimitiveHit> closestServed(Interval range) const {
+    std::optional<PrimitiveHit> closest;
+    for (const ServedTest& test : served) {
+      if (test.hit && range.contains(test.hit->t) && (!closest || test.hit->t < closest->t)) closest = test.hit;
+    }
+    return closest;
+  }
+  // How many tests followed the first one the judge answered with a hit (any hit must stop there).
+  size_t testsAfterFirstHit() const {
+    for (size_t k = 0; k < served.size(); ++k)
+      if (served[k].hit) return served.size() - k - 1;
+    return 0;
+  }
+};
+// `scene` with every primitive where it is counted but nowhere (every vertex and sphere at the origin): what
+// a served traversal is sent, so that every hit it knows of is one the judge served it (a candidate sent the
+// geometry could test it itself and ask for the one slot that hits).
+inline Scene withoutGeometry(Scene scene) {
+  for (TriangleMesh& mesh : scene.meshes) {
+    for (Point3& p : mesh.positions) p = Point3(0.0f);
+    for (Vec3& n : mesh.normals) n = Vec3(0.0f, 0.0f, 1.0f);
+  }
+  for (Sphere& sphere : scene.spheres) sphere.center = Point3(0.0f);
+  return scene;
+}
+
 inline std::vector<ServedTraversal> traverseServed(const Bvh& bvh, const Scene& scene,
                                                    const std::vector<calls::RayInRange>& rays, bool anyHit) {
   for (uint32_t primitive : bvh.primitives) {  // the judge indexes the scene with them (validateBvh checks more)
@@ -117,18 +151,19 @@ inline std::vector<ServedTraversal> traverseServed(const Bvh& bvh, const Scene& 
                                    std::to_string(ray) + " (the tree has " + std::to_string(geometry.size()) +
                                    " slots, the request " + std::to_string(rays.size()) + " rays)");
     }
-    std::vector<uint32_t>& tested = traversals[ray].tested;
-    if (tested.size() >= 4 * size_t(geometry.size()) + 16) {  // the judge's own log stays bounded
+    std::vector<ServedTest>& served = traversals[ray].served;
+    if (served.size() >= 4 * size_t(geometry.size()) + 16) {  // the judge's own log stays bounded
       throw remote::CandidateError("ray " + std::to_string(ray) + "'s traversal tested over " +
-                                   std::to_string(tested.size()) + " primitives, four times the tree's");
+                                   std::to_string(served.size()) + " primitives, four times the tree's");
     }
-    tested.push_back(slot);
+    const std::optional<PrimitiveHit> hit = geometry.intersect(slot, std::get<0>(rays[ray]), range);
+    served.push_back({slot, range, hit});
     wire::Writer reply;
-    reply.put(geometry.intersect(slot, std::get<0>(rays[ray]), range));
+    reply.put(hit);
     return reply.bytes();
   };
   const std::vector<calls::ServedResult> answers =
-      remote::callMany<calls::TraverseServed>({{bvh, scene, rays, anyHit}}, &serve).front();
+      remote::callMany<calls::TraverseServed>({{bvh, withoutGeometry(scene), rays, anyHit}}, &serve).front();
   for (size_t i = 0; i < rays.size(); ++i) std::tie(traversals[i].found, traversals[i].stats) = answers[i];
   return traversals;
 }

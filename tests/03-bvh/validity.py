@@ -30,4 +30,43 @@ ALTERNATES = [
     ("range-not-shrunk", "closest hit keeps the nearer hit without shrinking range.max: correct, only slower (the handout says so)",
      [("        if (auto hit = geometry.intersect(slot, ray, range)) {\n          closest = hit;\n          range.max = hit->t;  // from now on only closer hits count\n        }",
        "        if (auto hit = geometry.intersect(slot, ray, range); hit && (!closest || hit->t < closest->t)) closest = hit;")]),
+    ("box-tested-when-reached", "both traversals test a node's box when they reach it, children going on the stack "
+     "untested, and count every node reached as visited, its box missed or not: the other way to count, as correct",
+     [("  if (stats) ++stats->boxTests;\n  if (!intersectBox(bvh.nodes[0].bounds, ray, inverseDirection, range)) return std::nullopt;\n"
+       "  // A child's entry t, +inf for a miss: one number to compare and to stack.\n"
+       "  auto entry = [&](uint32_t child) {\n"
+       "    return intersectBox(bvh.nodes[child].bounds, ray, inverseDirection, range).value_or(kInfinity);\n  };\n", ""),
+      ("    if (stats) ++stats->nodesVisited;\n    if (node.isLeaf()) {\n"
+       "      for (uint32_t slot = node.leftOrFirst; slot < node.leftOrFirst + node.count; ++slot) {\n"
+       "        if (stats) ++stats->primitiveTests;\n        if (auto hit",
+       "    if (stats) ++stats->nodesVisited, ++stats->boxTests;  // every node reached, its box tested now\n"
+       "    if (!intersectBox(node.bounds, ray, inverseDirection, range)) {\n      // missed: on to the next pending node\n"
+       "    } else if (node.isLeaf()) {\n"
+       "      for (uint32_t slot = node.leftOrFirst; slot < node.leftOrFirst + node.count; ++slot) {\n"
+       "        if (stats) ++stats->primitiveTests;\n        if (auto hit"),
+      ("      // Test both children; go to the nearer, keep the farther for later.\n"
+       "      uint32_t near = node.leftOrFirst, far = near + 1;\n"
+       "      float tNear = entry(near), tFar = entry(far);\n"
+       "      if (stats) stats->boxTests += 2;\n"
+       "      if (tFar < tNear) std::swap(near, far), std::swap(tNear, tFar);\n"
+       "      if (tNear != kInfinity) {\n"
+       "        if (tFar != kInfinity) stack[size++] = {far, tFar};\n"
+       "        index = near;\n        continue;\n      }\n",
+       "      // Both children untested: the right one kept for later (its box tested when popped), the left one next.\n"
+       "      stack[size++] = {node.leftOrFirst + 1, range.min};\n"
+       "      index = node.leftOrFirst;\n      continue;\n"),
+      ("  if (stats) ++stats->boxTests;\n  if (!intersectBox(bvh.nodes[0].bounds, ray, inverseDirection, range)) return false;\n", ""),
+      ("    if (stats) ++stats->nodesVisited;\n    if (node.isLeaf()) {\n",
+       "    if (stats) ++stats->nodesVisited, ++stats->boxTests;  // every node reached, its box tested now\n"
+       "    if (!intersectBox(node.bounds, ray, inverseDirection, range)) {\n      // missed: on to the next pending node\n"
+       "    } else if (node.isLeaf()) {\n"),
+      ("      const uint32_t left = node.leftOrFirst;\n"
+       "      const bool hitLeft = intersectBox(bvh.nodes[left].bounds, ray, inverseDirection, range).has_value();\n"
+       "      const bool hitRight = intersectBox(bvh.nodes[left + 1].bounds, ray, inverseDirection, range).has_value();\n"
+       "      if (stats) stats->boxTests += 2;\n"
+       "      if (hitLeft) {\n        if (hitRight) stack[size++] = left + 1;\n        index = left;\n        continue;\n      }\n"
+       "      if (hitRight) {\n        index = left + 1;\n        continue;\n      }\n",
+       "      // Both children untested: the right one kept for later (its box tested when popped), the left one next.\n"
+       "      stack[size++] = node.leftOrFirst + 1;\n"
+       "      index = node.leftOrFirst;\n      continue;\n")]),
 ]
