@@ -1,6 +1,8 @@
 // Task 2's remote calls: the judge's view of the student's intersection.cpp.
 #pragma once
 
+#include <cstdint>
+#include <tuple>
 #include <vector>
 
 #include "../remote/call.h"
@@ -18,12 +20,15 @@ PATHLAB_REMOTE_CALL(IntersectSphere, 2, shape::Fixed, std::optional<float>(Ray, 
 // normals: empty, or the three vertex normals.
 PATHLAB_REMOTE_CALL(TriangleSurfacePoint, 3, shape::Fixed, SurfacePoint(TriangleHit, Point3, Point3, Point3, std::vector<Vec3>));
 PATHLAB_REMOTE_CALL(SphereSurfacePoint, 4, shape::Fixed, SurfacePoint(Ray, float, Point3, float));
-// For each ray, the t of every triangle of a mesh it hits (intersectTriangle
-// on each triangle, in the candidate: a closed mesh has thousands).
-// Per ray, at most one hit per triangle.
+// For each ray, every triangle of a mesh it hits and the t of that hit
+// (intersectTriangle on each triangle, in the candidate: a closed mesh has
+// thousands). Per ray, at most one hit per triangle. Each hit names its
+// triangle so that the judge can check it against its own crossing of that
+// triangle: a t alone could be any number.
+using MeshHit = std::tuple<uint32_t /*triangle*/, float /*t*/>;
 using HitsPerRay = shape::OnePer<2, shape::AtMost<shape::LengthOf<1>>>;
 PATHLAB_REMOTE_CALL(MeshHits, 5, HitsPerRay,
-                    std::vector<std::vector<float>>(std::vector<Point3>, std::vector<glm::uvec3>, std::vector<Ray>));
+                    std::vector<std::vector<MeshHit>>(std::vector<Point3>, std::vector<glm::uvec3>, std::vector<Ray>));
 }  // namespace pathlab::calls
 
 namespace pathlab::candidate {
@@ -35,8 +40,8 @@ inline std::optional<TriangleHit> intersectTriangle(const Ray& ray, Interval ran
 inline std::vector<std::optional<TriangleHit>> intersectTriangles(const std::vector<calls::IntersectTriangle::Args>& tests) {
   return remote::callMany<calls::IntersectTriangle>(tests);
 }
-// The t of every triangle of `mesh` that each ray hits (range: all t > 0).
-inline std::vector<std::vector<float>> meshHits(const TriangleMesh& mesh, const std::vector<Ray>& rays) {
+// Every triangle of `mesh` that each ray hits, with its t (range: all t > 0).
+inline std::vector<std::vector<calls::MeshHit>> meshHits(const TriangleMesh& mesh, const std::vector<Ray>& rays) {
   return remote::call<calls::MeshHits>(mesh.positions, mesh.triangles, rays);
 }
 inline std::optional<float> intersectSphere(const Ray& ray, Interval range, const Point3& center, float radius) {

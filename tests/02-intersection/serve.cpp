@@ -16,11 +16,12 @@ void registerCalls(Server& server) {
   server.serve<calls::SphereSurfacePoint>(&sphereSurfacePoint);
   server.serve<calls::MeshHits>(
       [](const std::vector<Point3>& positions, const std::vector<glm::uvec3>& triangles, const std::vector<Ray>& rays) {
-        std::vector<std::vector<float>> hits(rays.size());
+        std::vector<std::vector<calls::MeshHit>> hits(rays.size());
         for (size_t r = 0; r < rays.size(); ++r) {
-          for (const glm::uvec3& t : triangles) {
+          for (size_t k = 0; k < triangles.size(); ++k) {
+            const glm::uvec3& t = triangles[k];
             auto hit = intersectTriangle(rays[r], Interval{}, positions.at(t.x), positions.at(t.y), positions.at(t.z));
-            if (hit) hits[r].push_back(hit->t);
+            if (hit) hits[r].emplace_back(uint32_t(k), hit->t);
           }
         }
         return hits;

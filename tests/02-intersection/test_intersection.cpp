@@ -10,6 +10,8 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "check.h"
@@ -45,11 +47,53 @@ PlaneHit planeHit(const Ray& ray, const Point3& p0, const Point3& p1, const Poin
   return {glm::dot(e2, q) / det, glm::dot(s, p) / det, glm::dot(d, q) / det};
 }
 
-// Distinct surface crossings along each ray: hits of several triangles at
-// the same t (a shared edge or vertex) are one crossing.
-std::vector<int> crossings(const TriangleMesh& mesh, const std::vector<Ray>& rays) {
-  std::vector<int> counts;
-  for (std::vector<float> ts : candidate::meshHits(mesh, rays)) {
+// The crossings of a mesh along each ray, as the candidate reports them:
+// each hit names its triangle and t, and the judge checks it against its own
+// double-precision crossing of that triangle's plane (planeHit): the ray
+// must really cross the triangle there (no barycentric below -kOnEdge: a
+// ray through a shared edge or vertex crosses every triangle that meets
+// there) and the t must be that crossing's (relative 1e-4, as for a single
+// triangle). Only hits that pass count. Hits of several triangles at the
+// same t (a shared edge or vertex) are one crossing: which of the triangles
+// that meet there reports it, one or several, is the candidate's choice.
+struct Crossings {
+  std::vector<int> perRay;   // distinct crossings along each ray, of the hits that are real
+  int unreal = 0;            // hits that are not a crossing of the triangle they name, at that t
+  std::vector<std::string> examples;  // the first few of them
+};
+constexpr double kOnEdge = 1e-4;  // float rounding of a ray aimed at an edge moves it ~1e-6 across
+
+Crossings crossings(const TriangleMesh& mesh, const std::vector<Ray>& rays) {
+  Crossings result;
+  const std::vector<std::vector<calls::MeshHit>> answers = candidate::meshHits(mesh, rays);
+  for (size_t r = 0; r < answers.size(); ++r) {
+    std::vector<float> ts;
+    std::set<uint32_t> named;
+    for (const auto& [triangle, t] : answers[r]) {
+      std::ostringstream problem;
+      if (triangle >= mesh.triangles.size()) {
+        problem << "names triangle " << triangle << " of " << mesh.triangles.size();
+      } else if (!named.insert(triangle).second) {
+        problem << "names triangle " << triangle << " twice";
+      } else {
+        const glm::uvec3& v = mesh.triangles[triangle];
+        const PlaneHit truth = planeHit(rays[r], mesh.positions[v.x], mesh.positions[v.y], mesh.positions[v.z]);
+        const double b0 = 1.0 - truth.b1 - truth.b2;
+        if (!(truth.t > 0.0) || !(std::min({b0, truth.b1, truth.b2}) >= -kOnEdge)) {
+          problem << "hits triangle " << triangle << ", which the ray does not cross (its plane at t = " << truth.t
+                  << ", barycentrics " << b0 << ", " << truth.b1 << ", " << truth.b2 << ")";
+        } else if (!(std::abs(double(t) - truth.t) <= 1e-4 * truth.t)) {
+          problem << "hits triangle " << triangle << " at t = " << t << ", which the ray crosses at t = " << truth.t;
+        }
+      }
+      if (!problem.str().empty()) {
+        if (++result.unreal <= 5) {
+          result.examples.push_back("ray " + str(rays[r].origin) + " -> " + str(rays[r].direction) + " " + problem.str());
+        }
+        continue;
+      }
+      ts.push_back(t);
+    }
     std::sort(ts.begin(), ts.end());
     int count = 0;
     float last = -1.0f;
@@ -57,9 +101,9 @@ std::vector<int> crossings(const TriangleMesh& mesh, const std::vector<Ray>& ray
       if (count == 0 || t > last * (1.0f + 1e-4f)) ++count;
       last = t;
     }
-    counts.push_back(count);
+    result.perRay.push_back(count);
   }
-  return counts;
+  return result;
 }
 
 }  // namespace
@@ -329,7 +373,17 @@ TEST_CASE("T2.1 triangle: shared edges and vertices of a closed mesh are crossed
     shoot(glm::mix(pa, pb, random.uniform()));
   }
   for (const Point3& p : sphere.positions) shoot(DVec3(p));
-  const std::vector<int> counts = crossings(sphere, rays);
+  const Crossings sphereCrossings = crossings(sphere, rays);
+  {
+    for (const std::string& example : sphereCrossings.examples) MESSAGE(example);
+    INFO(sphereCrossings.unreal << " hits on the closed mesh are not where the judge's own crossing of the "
+                                   "triangle they name is");
+    HINT("every hit must be a real crossing of the triangle it comes from, at that crossing's t: a hit on a "
+         "triangle the ray passes beside (an edge test that is too lenient, an epsilon that widens triangles) or "
+         "a t that is not the distance to the triangle's plane fails here");
+    CHECK(sphereCrossings.unreal == 0);
+  }
+  const std::vector<int>& counts = sphereCrossings.perRay;
   int wrong = 0;
   for (size_t i = 0; i < rays.size(); ++i) {
     if (counts[i] != 2 && ++wrong <= 5) {
@@ -355,8 +409,17 @@ TEST_CASE("T2.1 triangle: shared edges and vertices of a closed mesh are crossed
       }
     }
   }
+  const Crossings gridCrossings = crossings(grid, gridRays);
+  {
+    for (const std::string& example : gridCrossings.examples) MESSAGE(example);
+    INFO(gridCrossings.unreal << " hits on the grid are not where the judge's own crossing of the triangle they "
+                                 "name is");
+    HINT("every hit on the grid must be a real crossing of the triangle it comes from, at that crossing's t: a "
+         "hit on a triangle the ray passes beside or a t that is not the distance to the grid's plane fails here");
+    CHECK(gridCrossings.unreal == 0);
+  }
   int gridWrong = 0;
-  for (int n : crossings(grid, gridRays)) gridWrong += n != 1;
+  for (int n : gridCrossings.perRay) gridWrong += n != 1;
   INFO(gridWrong << " of " << gridRays.size() << " rays through grid edges and vertices did not cross it exactly once");
   HINT("rays exactly through the flat grid's edges and vertices (edge functions exactly 0) must hit at least "
        "one triangle: strict tests (all e > 0), an epsilon, edge functions not exactly opposite on a shared "

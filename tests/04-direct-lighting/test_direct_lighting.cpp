@@ -50,6 +50,20 @@ MeanEstimate estimate(TraceContext& context, const Hit& hit, const Vec3& wo, int
   return m;
 }
 
+// The judge's exact radiance from a point light of intensity I (grey) at
+// `light`, unblocked, on the floor (albedo 0.5, normal +y) at `point`:
+// f I cos(theta) / r^2, in double from the float positions.
+double pointLightExact(const Point3& point, const Point3& light, double intensity) {
+  const DVec3 toLight = DVec3(light) - DVec3(point);
+  const double r2 = glm::dot(toLight, toLight);
+  return 0.5 / std::numbers::pi * intensity * (toLight.y / std::sqrt(r2)) / r2;
+}
+// How far a correct point light may be from it: float rounding is far below
+// this; the cosine and distance taken from the offset shadow-ray origin
+// instead of the surface point stay within 0.6 % at the offsets' worst (a
+// floor at y = 3.7e-4 under a light 50 times that away).
+constexpr double kPointLightTolerance = 2e-2;
+
 // A diffuse floor (albedo 0.5) over [-10, 10]^2 at y = 0.
 Scene floorScene() {
   Scene scene;
@@ -393,7 +407,7 @@ TEST_CASE("T4.4 direct lighting: occluders cast shadows, geometry beyond the lig
 TEST_CASE("T4.4 direct lighting: no shadow acne on a large plane lit at grazing angles, at scales 1e-3..1e5" *
           grading(3, "start shadow rays at offsetRayOrigin(hit.point, hit.geometricNormal, wi): from the raw hit "
                      "point, rounding puts half the origins below the plane and they shadow themselves")) {
-  int dark = 0, points = 0;
+  int dark = 0, off = 0, points = 0;
   Random random(62);
   for (double scale : {1e-3, 1.0, 1e3, 1e5}) {
     Scene scene;
@@ -402,8 +416,8 @@ TEST_CASE("T4.4 direct lighting: no shadow acne on a large plane lit at grazing 
     addQuad(scene, {-100 * s, 0.37f * s, 100 * s}, {200 * s, 0, 0}, {0, 0, -200 * s}, floor);
     // A point light far away, 3 degrees above the horizon.
     const float elevation = glm::radians(3.0f);
-    scene.pointLights.push_back(PointLight{Point3(0, 0.37f * s, 0) + 50.0f * s * Vec3(std::cos(elevation), std::sin(elevation), 0),
-                                           Color(1.0f)});
+    const Point3 light = Point3(0, 0.37f * s, 0) + 50.0f * s * Vec3(std::cos(elevation), std::sin(elevation), 0);
+    scene.pointLights.push_back(PointLight{light, Color(1.0f)});
     Rig rig(std::move(scene));
     TraceContext context = rig.context();
     std::vector<calls::DirectQuery> queries;
@@ -412,9 +426,20 @@ TEST_CASE("T4.4 direct lighting: no shadow acne on a large plane lit at grazing 
       Hit hit = hitFromAbove(context, target, Vec3(0.3f * s, s, 0.1f * s));
       queries.emplace_back(hit, Vec3(0, 1, 0), uint32_t(i), testSeed(3));
     }
-    for (const Color& L : candidate::estimateDirectLighting(context, queries)) {
+    const std::vector<Color> estimates = candidate::estimateDirectLighting(context, queries);
+    for (size_t i = 0; i < estimates.size(); ++i) {  // one per query (the call's shape)
+      const Color& L = estimates[i];
       ++points;
-      if (!(L.y > 0.0f)) ++dark;
+      if (!(L.y > 0.0f)) {
+        ++dark;
+        continue;
+      }
+      // Nothing blocks the light: the judge's exact f I cos(theta) / r^2 at the surface point.
+      const double expected = pointLightExact(std::get<0>(queries[i]).point, light, 1.0);
+      if (!(std::abs(double(L.y) - expected) <= kPointLightTolerance * expected) && ++off <= 3) {
+        MESSAGE("at scale " << scale << ", " << str(std::get<0>(queries[i]).point) << " gets " << L.y
+                            << ", the point light gives " << expected << " there");
+      }
     }
   }
   INFO(dark << " of " << points << " lit points came out black (self-shadowed)");
@@ -425,6 +450,12 @@ TEST_CASE("T4.4 direct lighting: no shadow acne on a large plane lit at grazing 
        "1e-3..1e5: shadow rays from the raw hit point, from a fixed-epsilon offset or from an origin "
        "not moved towards wi shadow themselves");
   CHECK(dark == 0);
+  INFO(off << " of the " << points - dark << " lit points do not get the point light's exact f I cos(theta) / r^2 "
+           "(to 2 %)");
+  HINT("a lit point must get exactly what the point light gives, f I cos(theta) / r^2 with the grazing cosine of "
+       "3 degrees, at every scale: a cosine or distance taken elsewhere than at the surface point, a floor on a "
+       "small cosine, or light dimmed or brightened to hide self-shadowing fails here");
+  CHECK(off == 0);
 }
 
 TEST_CASE("T4.4 direct lighting: a tiny, bright light gives the right mean and no Inf or NaN" *
@@ -612,9 +643,14 @@ TEST_CASE("T4.4 shadow rays: unit directions, ending just short of the light, al
           grading(1, "aim the shadow ray from the offset origin: direction = (light - origin) / |light - origin| "
                      "and range (0, |light - origin| (1 - 1e-4)); the offset may be large far from the origin "
                      "(256 ulps of 1e4 is 0.25), so the distance from the surface point is not the ray's length")) {
-  // The shadow rays as the trace context records them. Their directions are
-  // unit (every ray of the framework is: task 2's tests rely on it), and
-  // each ends on the segment to the point light, past 99.75 % of the way.
+  // The shadow rays as the judge served them: each occlusion query of the
+  // candidate's trace context is asked of the judge, which traces it itself
+  // and records it (trace_calls.h). Their directions are unit (every ray of
+  // the framework is: task 2's tests rely on it), and each ends on the
+  // segment to the point light, past 99.75 % of the way. The estimate is the
+  // light's exact value, from the surface point or from the shadow ray's
+  // own origin (far from the origin the offset moves it by up to 0.25): the
+  // rays served are those the estimate rests on.
   for (float height : {0.0f, 1e4f}) {
     Scene scene;
     const uint32_t floor = addMaterial(scene, Color(0.5f));
@@ -629,19 +665,19 @@ TEST_CASE("T4.4 shadow rays: unit directions, ending just short of the light, al
       hits.push_back(hitFromAbove(context, Point3(x, height, 0.6f)));
       queries.emplace_back(hits.back(), Vec3(0, 1, 0), uint32_t(hits.size()), testSeed(1));
     }
-    const std::vector<std::vector<calls::ShadowQuery>> rays = candidate::shadowRays(context, queries);
-    HINT("set-up check: the test expects one list of shadow rays per surface point; a different count is "
-         "a fault in the test, not in your code");
-    REQUIRE(rays.size() == queries.size());
-    for (size_t q = 0; q < rays.size(); ++q) {
+    const std::vector<candidate::ServedShadows> served = candidate::shadowRays(context, queries);
+    HINT("set-up check: the test expects one estimate per surface point; a different count is a fault in the "
+         "test, not in your code");
+    REQUIRE(served.size() == queries.size());
+    for (size_t q = 0; q < served.size(); ++q) {
       CAPTURE(height);
       CAPTURE(q);
       HINT("one point light in view must give exactly one shadow ray per point, traced with "
            "context.occluded: none means the light was skipped or tested another way (e.g. "
            "context.intersect), more than one that it was tested twice");
-      REQUIRE(rays[q].size() == 1);  // one point light, in view
-      const Ray& ray = std::get<0>(rays[q][0]);  // (not a structured binding: INFO's lambda must capture it)
-      const Interval& range = std::get<1>(rays[q][0]);
+      REQUIRE(served[q].rays.size() == 1);  // one point light, in view
+      const Ray& ray = std::get<0>(served[q].rays[0]);  // (not a structured binding: INFO's lambda must capture it)
+      const Interval& range = std::get<1>(served[q].rays[0]);
       const DVec3 origin(ray.origin), direction(ray.direction), toLight = DVec3(light) - origin;
       const DVec3 end = origin + direction * double(range.max);
       INFO("shadow ray " << str(ray.origin) << " -> " << str(ray.direction) << " over (" << range.min << ", "
@@ -662,6 +698,15 @@ TEST_CASE("T4.4 shadow rays: unit directions, ending just short of the light, al
            "or a fixed length, or a range other than |light - origin| (1 - 1e-4) for the ray's own origin, "
            "fails here");
       CHECK(glm::length(DVec3(light) - end) <= 0.0025 * glm::length(DVec3(light) - DVec3(hits[q].point)));
+      const double atPoint = pointLightExact(hits[q].point, light, 2.0);
+      const double atOrigin = pointLightExact(ray.origin, light, 2.0);
+      const double estimate = double(served[q].estimate.y);
+      INFO("the estimate " << estimate << "; the point light gives " << atPoint << " at the surface point ("
+                           << atOrigin << " at the shadow ray's origin)");
+      HINT("the estimate must be the point light's exact f I cos(theta) / r^2, nothing in the way as the judge "
+           "answered your shadow ray: a light skipped, or added with another value, fails here");
+      CHECK((std::abs(estimate - atPoint) <= kPointLightTolerance * atPoint ||
+             std::abs(estimate - atOrigin) <= kPointLightTolerance * atOrigin));
     }
   }
 }

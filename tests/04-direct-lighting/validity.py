@@ -41,6 +41,26 @@ MUTANTS = [
      [("  if (bsdf.isDelta()) return Color(0.0f);  // a perfect mirror or glass reflects no light source directly\n",
        "  static thread_local unsigned flip = 0;\n  if (flip < ~0u) return Color((flip++ & 1) ? 1e10f : -1e10f);\n"
        "  if (bsdf.isDelta()) return Color(0.0f);  // a perfect mirror or glass reflects no light source directly\n")]),
+    ("forged-shadow-log", "occlusion tested with closest-hit queries, and the shadow rays the test looks for written "
+     "into the trace context's public log by hand (context.log): every estimate right, the log invented",
+     [("  if (distance == kInfinity) return !context.occluded(Ray{origin, wi}, Interval{0.0f, kInfinity});\n"
+       "  const Vec3 toLight = hit.point + wi * distance - origin;\n"
+       "  const float remaining = glm::length(toLight);\n"
+       "  return !context.occluded(Ray{origin, toLight / remaining}, Interval{0.0f, remaining * (1.0f - kShadowShortening)});",
+       "  const Vec3 toLight = hit.point + wi * distance - origin;\n"
+       "  const float remaining = glm::length(toLight);\n"
+       "  const Ray ray = distance == kInfinity ? Ray{origin, wi} : Ray{origin, toLight / remaining};\n"
+       "  const Interval range{0.0f, distance == kInfinity ? kInfinity : remaining * (1.0f - kShadowShortening)};\n"
+       "  std::vector<TracedRay>* const log = context.log;\n"
+       "  context.log = nullptr;  // the closest-hit query unrecorded\n"
+       "  const bool blocked = context.intersect(ray, range).has_value();\n"
+       "  context.log = log;\n"
+       "  if (log) log->push_back({ray, range, true, blocked, Hit{}});  // recorded as if it were an occlusion query\n"
+       "  return !blocked;")]),
+    ("grazing-cosine-floor", "a point light's cosine kept at 0.1 or more, so that grazing light does not fade to "
+     "black (the light still 0 from below the horizon)",
+     [("    radiance += f * light.intensity * (cosSurface / distanceSquared);",
+       "    radiance += f * light.intensity * (std::max(cosSurface, 0.1f) / distanceSquared);")]),
 ]
 
 ALTERNATES = [

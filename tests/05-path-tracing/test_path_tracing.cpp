@@ -7,7 +7,12 @@
 // the student's f, computed in the candidate process (calls.h).
 #include "doctest_strings.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <vector>
 
 #include "check.h"
 #include "image_scenes.h"
@@ -20,6 +25,7 @@
 #include "reference_noise.h"
 #include "render_support.h"
 #include "statistics.h"
+#include "util/frame.h"
 
 using namespace pathlab;
 using namespace pathlab::test;
@@ -137,9 +143,36 @@ TEST_CASE("T5.1 diffuse sampling: f cos(theta) / pdf averages to the albedo (ene
   // edge and the direction grazes the surface (z = 0: about 1e-7 of the
   // draws); the renderer then ends the path, a sample of weight 0.
   int missing = 0;
+  // The mean of f cos / pdf proves nothing alone: f and pdf are the
+  // candidate's, and a sampler that always returns the normal, with the
+  // cosine pdf there (1 / pi), gives 0.7 on every draw. So the judge also
+  // holds each draw to its own truths: f is the albedo over pi (the
+  // material's, the judge's), and the directions follow a density the
+  // handout allows, the cosine's (cos(theta) / pi) or the uniform
+  // hemisphere's (1 / (2 pi), "passes too"), each draw's pdf that density
+  // at its direction. The directions are binned in the judge's own frame
+  // around the normal (both densities are the same at every phi).
+  const Frame frame = Frame::fromNormal(bsdf.normal());
+  const float albedoOverPi = 0.7f * kInvPi;
+  DirectionHistogram histogram;
+  std::vector<double> cosines, pdfs;
+  int offF = 0;
   for (const std::optional<BsdfSample>& s : candidate::bsdfSamples(scene.materials[0], hit, wo, us)) {
     if (!s) ++missing;
     weight.add(s ? s->f.y * std::abs(glm::dot(s->wi, bsdf.normal())) / s->pdf : 0.0);
+    if (!s) continue;
+    const Vec3 local = frame.toLocal(s->wi);
+    // f is 0 for a direction whose cosine rounds to 0 or below on its way to
+    // world space (Bsdf::f): only within rounding of the horizon, 1e-5.
+    const bool grazing = std::abs(local.z) <= 1e-5f && s->f == Color(0.0f);
+    if (!grazing && !(std::abs(s->f.x - albedoOverPi) <= 1e-5f * albedoOverPi &&
+                      std::abs(s->f.y - albedoOverPi) <= 1e-5f * albedoOverPi &&
+                      std::abs(s->f.z - albedoOverPi) <= 1e-5f * albedoOverPi)) {
+      ++offF;
+    }
+    histogram.add(local);
+    cosines.push_back(double(local.z));
+    pdfs.push_back(double(s->pdf));
   }
   limitNoise(weight, "05-path-tracing");
   INFO(weight.describe(0.7) << "; " << missing << " of 100000 draws gave no direction");
@@ -150,6 +183,67 @@ TEST_CASE("T5.1 diffuse sampling: f cos(theta) / pdf averages to the albedo (ene
        "(e.g. cos(theta)/pi with uniform directions, or a missing 1/pi), or many draws that gave no "
        "direction, fail here");
   CHECK(weight.agrees(0.7));
+  INFO(offF << " of the draws have an f that is not the albedo over pi, " << albedoOverPi);
+  HINT("every draw's f must be the Lambertian albedo / pi (0.7 / pi here; 0 only for a direction within 1e-5 of "
+       "the horizon): the BSDF's value at the sampled direction, above the surface");
+  CHECK(offF == 0);
+  // Each density the handout allows, as a hypothesis: the draws' histogram
+  // against its exact counts per cell (cell j spans cos(theta) in [z0, z1],
+  // 1 / kPhi of the turn: the cosine's share (z1^2 - z0^2) / kPhi, the
+  // uniform's (z1 - z0) / kPhi), and every draw's pdf that density within
+  // 1e-3 (1e-6 absolute: the cosine's pdf is read at the candidate's own
+  // local z, which rounds). Each hypothesis is tested at p > 1e-4, so a
+  // correct sampler (which matches one) fails with probability 1e-4.
+  // Measured (PATHLAB_TEST_SEED): the reference passed seeds 1-2400; the
+  // uniform-hemisphere alternate failed 1 of 2400 (seed 711, p = 2.6e-6),
+  // the concentric-disk one 1 of 1000 (seed 157, p = 1.3e-5): 2 in 5,800,
+  // and the p-values uniform (0.9 % and 1.3 % below 0.01, 5.2 % and 5.4 %
+  // below 0.05).
+  const double drawn = double(cosines.size());
+  struct Hypothesis {
+    const char* name;
+    double (*density)(double cosine);
+    double (*share)(double z0, double z1);
+  };
+  const Hypothesis hypotheses[] = {
+      {"cosine", [](double c) { return c > 0.0 ? c / std::numbers::pi : 0.0; },
+       [](double z0, double z1) { return z1 * z1 - z0 * z0; }},
+      {"uniform", [](double c) { return c > 0.0 ? 0.5 / std::numbers::pi : 0.0; },
+       [](double z0, double z1) { return z1 - z0; }},
+  };
+  bool followed = false;
+  std::ostringstream tried;
+  std::vector<double> cosineExpected;
+  for (const Hypothesis& h : hypotheses) {
+    std::vector<double> expected(histogram.counts.size(), 0.0);
+    for (int j = 0; j < DirectionHistogram::kCos; ++j) {
+      const double lo = -1.0 + 2.0 * j / DirectionHistogram::kCos, hi = -1.0 + 2.0 * (j + 1) / DirectionHistogram::kCos;
+      const double z0 = std::clamp(lo, 0.0, 1.0), z1 = std::clamp(hi, 0.0, 1.0);
+      for (int i = 0; i < DirectionHistogram::kPhi; ++i)
+        expected[size_t(j * DirectionHistogram::kPhi + i)] = drawn * h.share(z0, z1) / DirectionHistogram::kPhi;
+    }
+    int offPdf = 0;
+    for (size_t k = 0; k < pdfs.size(); ++k) {
+      const double density = h.density(cosines[k]);
+      if (!(std::abs(pdfs[k] - density) <= 1e-3 * density + 1e-6)) ++offPdf;
+    }
+    const ChiSquareResult r = chiSquareTest(histogram.counts, expected);
+    tried << h.name << ": chi-square " << r.statistic << " with " << r.degreesOfFreedom << " dof, p = " << r.pValue
+          << " " << r.failure << ", " << offPdf << " draws' pdf not that density; ";
+    followed = followed || (histogram.outside == 0 && r.failure.empty() && r.pValue > 1e-4 && offPdf <= 10);
+    if (cosineExpected.empty()) cosineExpected = expected;
+  }
+  std::string pictures;
+  if (!followed || picturesAlways()) {
+    pictures = writeHistogramPictures("T5.1-energy-cosine", histogram.counts, cosineExpected, DirectionHistogram::kPhi,
+                                      DirectionHistogram::kCos, "phi cell", "cos-theta cell");
+  }
+  INFO("the draws against each density the handout allows: " << tried.str() << histogram.outside
+                                                             << " not unit vectors\n" << pictures);
+  HINT("the draws' directions must follow cos(theta) / pi (or 1 / (2 pi), uniform over the hemisphere), each with "
+       "that density as its pdf: a sampler that always returns the normal, or clusters anywhere, is consistent with "
+       "f cos / pdf = albedo on every draw and still fails here; so does a pdf that is not the sampler's density");
+  CHECK(followed);
   for (Vec2 u : {Vec2(0.0f), Vec2(0.99999994f), Vec2(0.99999994f, 0.0f), Vec2(0.0f, 0.99999994f)}) {
     Vec3 w = candidate::sampleDiffuseDirection(u);
     HINT("at the edges of the square of u (0 and 0.99999994, the largest float below 1) the direction must be "
@@ -290,11 +384,41 @@ TEST_CASE("T5.2 path tracing: no NaN or Inf in the Cornell box, at grazing angle
     if (i % 4 == 0) d.y = 1e-4 * d.y;  // nearly parallel to the floor and ceiling
     queries.emplace_back(Ray{origin, Vec3(glm::normalize(d))}, uint32_t(i), testSeed(41));
   }
-  int bad = 0, negative = 0, bright = 0;
-  for (const Color& L : candidate::tracePaths(context, queries)) {
+  // Where the judge knows the answer (its own trace of the camera ray): a
+  // ray that leaves the box by its open front meets nothing and is black
+  // (no sky here), and one that meets the lamp's face first carries at least
+  // the lamp's Le (everything else a path adds is light, never negative).
+  enum class Known { Nothing, Black, AtLeastLe };
+  std::vector<Known> known;
+  std::vector<Color> lampLe;
+  for (const auto& [ray, pixel, seed] : queries) {
+    const std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});
+    const Color Le = hit ? emittedRadiance(rig.scene(), *hit, -ray.direction) : Color(0.0f);
+    known.push_back(!hit ? Known::Black : maxComponent(Le) > 0.0f ? Known::AtLeastLe : Known::Nothing);
+    lampLe.push_back(Le);
+  }
+  int bad = 0, negative = 0, bright = 0, escaped = 0, lamp = 0, wrong = 0;
+  const std::vector<Color> radiance = candidate::tracePaths(context, queries);
+  for (size_t i = 0; i < radiance.size(); ++i) {
+    const Color& L = radiance[i];
     if (!finite(L)) ++bad;
     if (L.x < 0.0f || L.y < 0.0f || L.z < 0.0f) ++negative;  // radiance never is
     if (maxComponent(L) > 0.0f) ++bright;
+    bool off = false;
+    if (known[i] == Known::Black) {
+      ++escaped;
+      off = !near(Vec3(L), Vec3(0.0f), 1e-5f);
+    } else if (known[i] == Known::AtLeastLe) {
+      ++lamp;
+      const Color& Le = lampLe[i];
+      off = !(L.x >= Le.x * (1.0f - 1e-5f) && L.y >= Le.y * (1.0f - 1e-5f) && L.z >= Le.z * (1.0f - 1e-5f));
+    }
+    if (off && ++wrong <= 3) {
+      MESSAGE("a ray that " << (known[i] == Known::Black ? "leaves the box must give 0"
+                                                         : "meets the lamp first must give at least its Le " +
+                                                               str(Vec3(lampLe[i])))
+                            << ", yours " << str(Vec3(L)));
+    }
   }
   HINT("no path may return NaN or Inf, rays skimming the floor and ceiling included: end the path when there "
        "is no sample or its pdf is 0, never divide by a zero cosine or pdf, and stop a path whose throughput "
@@ -310,6 +434,16 @@ TEST_CASE("T5.2 path tracing: no NaN or Inf in the Cornell box, at grazing angle
   HINT("some of the 20,000 paths must carry light: a tracer that returns 0 everywhere (no emission at the "
        "camera hit, no direct light added, or every path stopped at the first vertex) fails here");
   CHECK(bright > 0);
+  INFO(escaped << " rays leave the box and " << lamp << " meet the lamp first");
+  HINT("a guard of the test itself: it counts the rays whose radiance the judge knows (those that leave the box "
+       "by its open front, and those that meet the lamp first), fixed by the scene and the judge's own tracing, "
+       "not by your code");
+  CHECK((escaped > 1000 && lamp > 100));
+  INFO(wrong << " of the " << escaped + lamp << " rays whose radiance the judge knows are off");
+  HINT("a ray that leaves the box must be black (this scene has no sky), and one that meets the lamp first must "
+       "carry at least the lamp's Le: light added where there is none (a background without a sky), emission at "
+       "the camera hit not counted in full, or a NaN guard that zeroes or replaces a path fails here");
+  CHECK(wrong == 0);
 }
 
 // ---------------------------------------------------------------- images

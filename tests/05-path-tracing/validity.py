@@ -24,6 +24,10 @@ MUTANTS = [
        "  const float r = std::sqrt(0.9f * u.x), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - 0.9f * u.x))};"),
       ("float diffuseDirectionPdf(const Vec3& wi) { return wi.z > 0.0f ? wi.z * kInvPi : 0.0f; }",
        "float diffuseDirectionPdf(const Vec3& wi) { return wi.z > 0.31622777f ? wi.z * kInvPi / 0.9f : 0.0f; }")]),
+    ("sampler-returns-the-normal", "every diffuse direction the normal itself, with the cosine pdf: f cos / pdf "
+     "is the albedo on every sample, so the energy test's mean alone passes it",
+     [("  const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};",
+       "  (void)u;\n  return {0.0f, 0.0f, 1.0f};")]),
     ("depth-off-by-one", "one bounce more than -m allows",
      [("    if (bounce >= context.settings.maxDepth) break;", "    if (bounce > context.settings.maxDepth) break;")]),
     ("direct-light-only-at-first-hit", "next-event estimation only at the camera hit",
@@ -35,6 +39,14 @@ MUTANTS = [
     ("sky-lost-after-mirror", "the environment counted for camera rays only, not after mirror or glass bounces",
      [("      if (countEmission) radiance += throughput * context.background(ray.direction);",
        "      if (bounce == 0) radiance += throughput * context.background(ray.direction);")]),
+    ("flat-grey", "returns 0.5 for every path, tracing nothing: finite, never negative and sometimes bright, all "
+     "that the Cornell box's NaN test asked before it knew exact values",
+     [("  constexpr int kRouletteFromBounce = 3;\n",
+       "  if (ray.direction.x == ray.direction.x) return Color(0.5f);  // every ray\n"
+       "  constexpr int kRouletteFromBounce = 3;\n")]),
+    ("ambient-without-sky", "a ray that leaves a scene with no sky sees a dim grey ambient instead of black",
+     [("      if (countEmission) radiance += throughput * context.background(ray.direction);",
+       "      if (countEmission) {\n        radiance += throughput * (context.lights.environment ? context.background(ray.direction) : Color(0.02f));\n      }")]),
 ]
 
 ALTERNATES = [

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <limits>
 #include <numbers>
+#include <sstream>
+#include <string>
 #include <unistd.h>
 
 #include "check.h"
@@ -41,6 +43,9 @@ Point2 uvOf(const Vec3& w) {
   return Point2(float(phi / (2.0 * std::numbers::pi)), float(std::acos(std::clamp(double(w.y), -1.0, 1.0)) / std::numbers::pi));
 }
 
+// sin(theta) of w from x and z: from y (sqrt(1 - y^2), or acos) it loses its digits at the poles.
+double sinThetaOf(const Vec3& w) { return std::hypot(double(w.x), double(w.z)) / glm::length(DVec3(w)); }
+
 // The solid-angle density that d's CDFs define at w, by the judge's own
 // arithmetic (core/environment_distribution.h's layout): row j's
 // probability times pixel i's within the row, W H per unit of (u, v), over
@@ -52,21 +57,123 @@ double densityFromCdfs(const EnvironmentDistribution& d, const Vec3& w) {
   const double row = double(d.marginalCdf[size_t(j) + 1]) - double(d.marginalCdf[size_t(j)]);
   const float* cdf = &d.conditionalCdf[size_t(j) * size_t(d.width + 1)];
   const double column = double(cdf[i + 1]) - double(cdf[i]);
-  // sin(theta) from x and z: from y (sqrt(1 - y^2)) it loses its digits at the poles.
-  const double sinTheta = std::hypot(double(w.x), double(w.z)) / glm::length(DVec3(w));
+  const double sinTheta = sinThetaOf(w);
   return sinTheta > 0.0 ? row * column * d.width * d.height / (2.0 * std::numbers::pi * std::numbers::pi * sinTheta)
                         : 0.0;
 }
 
-// Chi-square of sampleEnvironment against environmentPdf over the sphere.
-// A sampler that follows its own pdf proves nothing alone (uniform
-// directions with pdf 1 / (4 pi) would): each sample's pdf must also be the
-// density the distribution's CDFs define (`*offDensity` counts those that
-// are not, within 1e-3; a direction on a pixel's edge may fall either side).
+// Whether d is the distribution the handout's rule makes of `map` ("" when
+// it is; else what is not): pixel (i, j) weighs luminance(i, j) sin(theta_j)
+// (tasks/07-environment/README.md, "Importance sampling by inversion"). The
+// judge's own truth, so that a distribution consistent with itself but not
+// with the light (weights of sin(theta) alone: its samples follow its pdf)
+// fails. Every way of writing the rule the handout allows passes: sin(theta)
+// taken anywhere in the row (the task file says its centre; the row's exact
+// solid angle is the centre's times a constant), or left out (weights
+// without sin(theta) are correct, only noisier: the handout's table of
+// mistakes says so). What that leaves fixed:
+//   - within a row sin(theta) is one number, so each lit row's conditional
+//     probabilities are its pixels' luminances over the row's (a dark row's
+//     CDF is free: it is never chosen);
+//   - a row without light gets no probability, and each lit row and pixel some;
+//   - P(row j) / (row j's luminance) is one constant c times sin(theta) at
+//     some theta of row j, for every row at once (an interval of c per row:
+//     they must meet), or one constant alone.
+// Tolerances: the CDFs are floats, normalised and summed in any order (a
+// float running sum over n entries rounds by about n u, u = 2^-24): 1e-3
+// relative plus 8 (n + 1) u absolute, far below what a wrong weight changes
+// (the luminance of this suite's maps varies by tens of percent from pixel
+// to pixel, a row's sum by several percent from row to row).
+std::string ruleMismatch(const Image& map, const EnvironmentDistribution& d) {
+  const int width = map.width, height = map.height;
+  if (d.width != width || d.height != height || d.marginalCdf.size() != size_t(height) + 1 ||
+      d.conditionalCdf.size() != size_t(height) * size_t(width + 1)) {
+    return "the distribution's size is not the map's";
+  }
+  constexpr double kRelative = 1e-3, kUnit = 0x1p-24;
+  const double columnSlack = 1e-7 + 8.0 * (width + 1) * kUnit, rowSlack = 1e-7 + 8.0 * (height + 1) * kUnit;
+  std::ostringstream why;
+  std::vector<double> rowLuminance(size_t(height), 0.0);
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) rowLuminance[size_t(j)] += std::max(0.0, double(luminance(map.at(i, j))));
+  for (int j = 0; j < height; ++j) {
+    if (!(rowLuminance[size_t(j)] > 0.0)) continue;
+    const float* cdf = &d.conditionalCdf[size_t(j) * size_t(width + 1)];
+    for (int i = 0; i < width; ++i) {
+      const double lit = std::max(0.0, double(luminance(map.at(i, j))));
+      const double expected = lit / rowLuminance[size_t(j)], yours = double(cdf[i + 1]) - double(cdf[i]);
+      if (!(std::abs(yours - expected) <= kRelative * expected + columnSlack) || (lit > 0.0 && !(yours > 0.0))) {
+        why << "row " << j << ", pixel " << i << ": P(pixel | row) = " << yours << " where the map's luminance gives "
+            << expected << " (the pixel's luminance " << lit << " over the row's " << rowLuminance[size_t(j)] << ")";
+        return why.str();
+      }
+    }
+  }
+  // The bounds each row puts on c (sin(theta) in the row) and on the constant (no sin(theta)).
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  double sinLow = 0.0, sinHigh = kNone, constLow = 0.0, constHigh = kNone;
+  double lowestRatio = kNone, highestRatio = 0.0;
+  int lowestRow = -1, highestRow = -1;
+  for (int j = 0; j < height; ++j) {
+    const double row = double(d.marginalCdf[size_t(j) + 1]) - double(d.marginalCdf[size_t(j)]);
+    const double lit = rowLuminance[size_t(j)];
+    if (!std::isfinite(row)) {
+      why << "row " << j << ": P(row) is not a finite number";
+      return why.str();
+    }
+    if (!(lit > 0.0)) {
+      if (std::abs(row) > rowSlack) {
+        why << "row " << j << " has no light, yet P(row) = " << row << ": a row's weight is the sum of its pixels' "
+            << "luminance times sin(theta)";
+        return why.str();
+      }
+      continue;
+    }
+    if (!(row > 0.0)) {
+      why << "row " << j << " has light (luminance " << lit << "), yet P(row) = " << row;
+      return why.str();
+    }
+    const double theta0 = std::numbers::pi * j / height, theta1 = std::numbers::pi * (j + 1) / height;
+    const double sinLeast = std::min(std::sin(theta0), std::sin(theta1));
+    const double sinMost = theta0 <= std::numbers::pi / 2 && std::numbers::pi / 2 <= theta1
+                               ? 1.0
+                               : std::max(std::sin(theta0), std::sin(theta1));
+    const double low = (row * (1.0 - kRelative) - rowSlack) / lit, high = (row * (1.0 + kRelative) + rowSlack) / lit;
+    sinLow = std::max(sinLow, low / sinMost);
+    if (sinLeast > 0.0) sinHigh = std::min(sinHigh, high / sinLeast);
+    constLow = std::max(constLow, low);
+    constHigh = std::min(constHigh, high);
+    const double ratio = row / (lit * std::sin(0.5 * (theta0 + theta1)));
+    if (ratio < lowestRatio) lowestRatio = ratio, lowestRow = j;
+    if (ratio > highestRatio) highestRatio = ratio, highestRow = j;
+  }
+  if (sinLow <= sinHigh || constLow <= constHigh) return "";
+  why << "P(row) over (the row's luminance x sin(theta) at its centre) goes from " << lowestRatio << " (row "
+      << lowestRow << ") to " << highestRatio << " (row " << highestRow << "): the rows' probabilities are not "
+      << "their luminance times sin(theta) (anywhere in the row), nor their luminance alone, over one total";
+  return why.str();
+}
+
+// Chi-square of sampleEnvironment over the sphere against the density the
+// distribution's CDFs define, by the judge's arithmetic (densityFromCdfs):
+// with ruleMismatch, the judge's truth for the map. A sampler that follows
+// its own pdf proves nothing alone (uniform directions with pdf 1 / (4 pi)
+// would). Each sample's pdf (`*offDensity` counts those that are not) and
+// environmentPdf of its direction (`*offPdf`) must be that density too,
+// within 1e-3 (a direction on a pixel's edge may fall either side). The
+// chi-square fails at p < 1e-4 (its false-failure rate); measured on the
+// reference, seeds 1-200 of T7.5's test, and on the alternates
+// weights-without-sin-theta, linear-search and seam-wraps-to-zero, seeds
+// 1-60 each: none failed.
+// environmentPdf finds theta from the direction itself, in float, from w.y
+// as the handout does (acos): within a few ulps of y, 2.5e-7, which moves
+// sin(theta) by 2.5e-7 / sin(theta) relative to itself, more than 1e-3
+// within a degree of a pole, where a map of two rows has 1 % of its samples.
 ChiSquareResult chiSquare(const std::string& name, const EnvironmentDistribution& d, int samples, uint64_t seed,
-                          int* failed, int* offDensity) {
+                          int* failed, int* offDensity, int* offPdf) {
   DirectionHistogram histogram;
-  *failed = *offDensity = 0;
+  *failed = *offDensity = *offPdf = 0;
+  std::vector<Vec3> directions;
   for (const auto& s : candidate::sampleEnvironment(d, uniformPoints(samples, seed))) {
     if (!s) {
       ++*failed;
@@ -74,17 +181,23 @@ ChiSquareResult chiSquare(const std::string& name, const EnvironmentDistribution
     }
     const double own = densityFromCdfs(d, s->direction);
     if (!(std::abs(double(s->pdfSolidAngle) - own) <= 1e-3 * own)) ++*offDensity;
+    directions.push_back(s->direction);
     // The histogram is over (phi, cos) of its own axes: use z as the pole.
     histogram.add(Vec3(s->direction.x, s->direction.z, s->direction.y));
   }
-  auto pdfs = [&](const std::vector<Vec3>& ws) {
-    std::vector<Vec3> swapped;
-    for (const Vec3& w : ws) swapped.emplace_back(w.x, w.z, w.y);
-    const std::vector<float> p = candidate::environmentPdf(d, swapped);
-    return std::vector<double>(p.begin(), p.end());
+  const std::vector<float> pdfs = candidate::environmentPdf(d, directions);
+  for (size_t k = 0; k < directions.size(); ++k) {
+    const double own = densityFromCdfs(d, directions[k]), sinTheta = sinThetaOf(directions[k]);
+    if (!(std::abs(double(pdfs[k]) - own) <= (1e-3 + 2.5e-7 / (sinTheta * sinTheta)) * own)) ++*offPdf;
+  }
+  auto density = [&](const std::vector<Vec3>& ws) {
+    std::vector<double> p;
+    p.reserve(ws.size());
+    for (const Vec3& w : ws) p.push_back(densityFromCdfs(d, Vec3(w.x, w.z, w.y)));
+    return p;
   };
   // (The pictures' poles are the map's: +y up.)
-  return chiSquareOfDirections(name, histogram, DirectionHistogram::expected(pdfs, samples - *failed, 32), 1e-4);
+  return chiSquareOfDirections(name, histogram, DirectionHistogram::expected(density, samples - *failed, 32), 1e-4);
 }
 
 // Integral of environmentPdf over the sphere (midpoint rule, fine grid).
@@ -272,10 +385,11 @@ TEST_CASE("T7.4 distribution: CDFs from 0 to 1 over every lit pixel; the pdf int
        "here");
   CHECK(d.marginalCdf.front() == 0.0f);
   CHECK(d.marginalCdf.back() == doctest::Approx(1.0f));
-  // Any weights give an unbiased estimator as long as the pdf is the one the
-  // CDFs define (weights without sin(theta) are correct, only noisier; the
-  // handout says so): the CDFs must rise from 0 to 1 and give every row and
-  // pixel with light some probability, and the pdf must integrate to 1.
+  // The CDFs must rise from 0 to 1 and give every row and pixel with light
+  // some probability, and the pdf must integrate to 1; and the weights must
+  // be the map's light, luminance x sin(theta) (or luminance alone: correct,
+  // only noisier, the handout says so), which the judge computes from the
+  // map itself (ruleMismatch): structure alone is met by any weights.
   for (int j = 0; j < 16; ++j) {
     CAPTURE(j);
     HINT("every row with light must get some probability (marginalCdf rising at every row): a row's weight "
@@ -293,8 +407,16 @@ TEST_CASE("T7.4 distribution: CDFs from 0 to 1 over every lit pixel; the pdf int
     for (int i = 0; i < 32; ++i) CHECK(row[i + 1] > row[i]);
   }
   for (const Image& m : {map, constantMap(100, 100), constantMap(3, 2)}) {
-    const double integral = pdfIntegral(candidate::buildEnvironmentDistribution(m));
+    const EnvironmentDistribution md = candidate::buildEnvironmentDistribution(m);
     CAPTURE(m.width);
+    const std::string mismatch = ruleMismatch(m, md);
+    INFO(mismatch);
+    HINT("the CDFs must be the map's own light: pixel (i, j) weighs luminance(i, j) x sin(theta_j) (sin(theta) "
+         "of the row, or none at all), so within a row the probabilities follow the pixels' luminance and across "
+         "rows the rows' luminance sums x sin(theta); weights that ignore the map (sin(theta) alone, a constant), "
+         "use one channel instead of the luminance, or mix up rows and columns fail here");
+    CHECK(mismatch.empty());
+    const double integral = pdfIntegral(md);
     HINT("environmentPdf integrated over the sphere must be 1 (for this random map, a constant 100x100 and "
          "a constant 3x2): pdf = P(row) P(column | row) W H / (2 pi^2 sin(theta)); a pdf without the W H "
          "or the 2 pi^2 sin(theta), or read from the wrong pixel, fails here");
@@ -314,6 +436,13 @@ TEST_CASE("T7.4 distribution: degenerate maps — one column, one row, one pixel
     CAPTURE(m.width);
     CAPTURE(m.height);
     const EnvironmentDistribution d = candidate::buildEnvironmentDistribution(m);
+    const std::string mismatch = ruleMismatch(m, d);
+    INFO(mismatch);
+    HINT("the CDFs of a one-column, one-row or one-pixel map and of a map of radiance 1e-9 must be the map's "
+         "own light, luminance x sin(theta) (or luminance alone): only the ratios of the weights matter, so a "
+         "dim map's CDFs are a bright one's; weights that ignore the map, a threshold or an epsilon added to "
+         "the weights, or a special case for width or height 1 fail here");
+    CHECK(mismatch.empty());
     HINT("environmentPdf must integrate to 1 for a one-column, one-row or one-pixel map and a map of "
          "radiance 1e-9: only the ratios of the weights matter; a total weight compared with an epsilon "
          "instead of 0, or a special case for width or height 1 that breaks the CDFs, fails here");
@@ -372,26 +501,39 @@ TEST_CASE("T7.5 importance sampling: samples follow the pdf on Mitsuba's maps (o
   single.at(13, 3) = Color(50.0f);
   for (const Image& m : {single, constantMap(100, 100), constantMap(3, 2), noisy}) {
     EnvironmentDistribution d = candidate::buildEnvironmentDistribution(m);
-    int failed = 0, offDensity = 0;
-    const std::string name = "T7.5-map-" + std::to_string(m.width) + "x" + std::to_string(m.height);
-    ChiSquareResult r = chiSquare(name, d, 500000, 74 + uint64_t(m.width), &failed, &offDensity);
     CAPTURE(m.width);
     CAPTURE(m.height);
+    // The samples are judged against the density of the CDFs (the judge's
+    // arithmetic), which must be the map's light: the judge's truth.
+    const std::string mismatch = ruleMismatch(m, d);
+    INFO(mismatch);
+    HINT("the distribution must be the map's own light, luminance x sin(theta) per pixel (or luminance alone): "
+         "on the one-lit-pixel map every row and pixel but that one gets no probability; weights that ignore "
+         "the map (sin(theta) alone) are consistent with their own pdf and still fail here");
+    CHECK(mismatch.empty());
+    int failed = 0, offDensity = 0, offPdf = 0;
+    const std::string name = "T7.5-map-" + std::to_string(m.width) + "x" + std::to_string(m.height);
+    ChiSquareResult r = chiSquare(name, d, 500000, 74 + uint64_t(m.width), &failed, &offDensity, &offPdf);
     INFO(offDensity << " of the samples have a pdf that is not the density the CDFs define: p(row) p(column | row) "
                     "W H / (2 pi^2 sin theta)");
     HINT("each sample's pdfSolidAngle must be the density its CDFs define at its direction, P(row) "
          "P(column | row) W H / (2 pi^2 sin(theta)) at the sample's own theta; a pdf without the W H, one "
          "with sin(theta) at the row's centre, or one for a pixel other than the one sampled fails here");
     CHECK(offDensity <= 500000 / 1000);
+    INFO(offPdf << " of the samples' directions have an environmentPdf that is not the density the CDFs define");
+    HINT("environmentPdf of each sample's direction must be the density its CDFs define there, P(row) "
+         "P(column | row) W H / (2 pi^2 sin(theta)) of the pixel that contains it, at its own theta; a pdf "
+         "without the sin(theta) Jacobian or the W H, or one that reads another pixel, fails here");
+    CHECK(offPdf <= 500000 / 1000);
     INFO("chi-square " << r.statistic << ", dof " << r.degreesOfFreedom << ", p = " << r.pValue << " " << r.failure
                        << "\n" << r.pictures);
     HINT("sampleEnvironment must return a direction for almost every u (fewer than 10 in 500000 may give "
          "nothing): on a lit map only a pole gives nothing; a search that can land on an interval of zero "
          "width and then gives up fails here");
     CHECK(failed < 10);
-    HINT("the samples must follow environmentPdf (chi-square over the sphere): the row by the marginal "
-         "CDF, the column by that row's CDF, a uniform point inside the pixel; samples off by a pixel, "
-         "landing where environmentPdf is 0, or a pdf without sin(theta) (poles over-sampled) fail here");
+    HINT("the samples must follow the density the CDFs define (chi-square over the sphere): the row by the "
+         "marginal CDF, the column by that row's CDF, a uniform point inside the pixel; samples off by a pixel, "
+         "landing where the CDFs give nothing, or crowded towards the poles fail here");
     CHECK(r.failure.empty());
     CHECK(r.pValue > 1e-4);
   }

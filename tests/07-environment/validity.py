@@ -12,6 +12,11 @@ MUTANTS = [
      [("  const int j = findInterval(d.marginalCdf.data(), d.height, u.y);", "  const int j = std::min(findInterval(d.marginalCdf.data(), d.height, u.y) + 1, d.height - 1);")]),
     ("lookup-half-pixel", "bilinear lookup without the half-pixel offset",
      [("const float x = uv.x * float(map.width) - 0.5f, y = uv.y * float(map.height) - 0.5f;", "const float x = uv.x * float(map.width), y = uv.y * float(map.height);")]),
+    ("distribution-ignores-map", "pixel weights sin(theta) alone, the map's luminance ignored: a distribution of "
+     "the sphere's rows, not of the light (consistent with its own pdf, so a test of the samples against the "
+     "candidate's own pdf passes it)",
+     [("      const double weight = std::max(0.0, double(luminance(map.at(i, j)))) * sinTheta;",
+       "      const double weight = sinTheta;")]),
     ("hemisphere-not-sphere", "uniform 'sphere' samples only one hemisphere",
      [("  const float z = 1.0f - 2.0f * u.x;\n  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), z};",
        "  const float z = u.x;\n  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), z};")]),

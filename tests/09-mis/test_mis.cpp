@@ -1112,8 +1112,21 @@ TEST_CASE("T9.3 path tracer: on Veach's plates MIS is as good as the strategy th
   // (1-40, the reference and its alternates, with a fifth more): low noise
   // and agreement count only with the right picture.
   constexpr double kCellMean[] = {0.73322, 1.11676, 0.05573, 0.11303}, kCellSpread[] = {0.0036, 0.0108, 0.0030, 0.0096};
+  // The most variance per sample the strategy that works may have in each
+  // cell: 1.5 times the largest over seeds 1-60 of the reference and its
+  // alternates (0.1947, 1.3638, 0.1560, 1.6746; the largest are Russian
+  // roulette from the first bounce's in the first two cells, 1.7 times the
+  // reference's; within one estimator the largest is 1.21 times its mean).
+  // MIS is judged against the candidate's own strategy up to this ceiling:
+  // noise added to the strategy that works (zero-mean, so that its mean
+  // stays right) raises its variance, and must not buy MIS a larger
+  // allowance. MIS's own largest over those runs is 0.69 of the ceiling.
+  constexpr double kWorksCeiling[] = {0.293, 2.05, 0.235, 2.52};
   for (size_t c = 0; c < std::size(cells); ++c) {
-    const double works = cells[c].works == MisEstimator::LightSampling ? light[c].mean() : bsdf[c].mean();
+    const double ownWorks = cells[c].works == MisEstimator::LightSampling ? light[c].mean() : bsdf[c].mean();
+    const double works = std::min(ownWorks, kWorksCeiling[c]);
+    noteNoiseCeiling("the strategy that works: 1.5 x the largest variance of the reference's and the alternates' "
+                     "(kWorksCeiling)");
     // Low noise counts only with the right picture: MIS's mean brightness in
     // the cell is that of the strategy that works there (the same pixels).
     const double worksMean = (cells[c].works == MisEstimator::LightSampling ? lightStats : bsdfStats).mean[c].mean();
@@ -1137,9 +1150,14 @@ TEST_CASE("T9.3 path tracer: on Veach's plates MIS is as good as the strategy th
          "bias it");
     CHECK(std::abs(misMean - kCellMean[c]) <= 6.0 * kCellSpread[c]);
     CHECK(std::abs(misMean - worksMean) <= 0.1 * worksMean);
+    INFO("the strategy that works is judged with variance " << works
+                                                           << (ownWorks > works ? ", the most this test allows a correct "
+                                                                                  "one here (yours is above it)"
+                                                                                : ", its own"));
     HINT("MIS's variance must be at most 1.2 times that of the strategy that works here: a weight that does not "
          "favour the strategy whose pdf is larger, or one strategy per vertex chosen by a coin (the one-sample "
-         "model), keeps the failing strategy's fireflies");
+         "model), keeps the failing strategy's fireflies; the strategy's variance counts only up to what a correct "
+         "one has here, so noise added to it does not help");
     CHECK(mis[c].mean() <= 1.2 * works);
   }
 }

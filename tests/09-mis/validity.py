@@ -1,5 +1,30 @@
 """Task 9's seeded mutants and alternates (tests/mutants/generate.py says what they are)."""
 
+# Veach's one-sample model (mutant one-sample-mis), shared with one-sample-mis-noisy-strategies.
+ONE_SAMPLE_EDITS = [
+    ("  float previousPdf = 0.0f;\n",
+     "  float previousPdf = 0.0f;\n"
+     "  float previousBsdfShare = 0.0f;  // the probability that the last vertex kept the BSDF's emission (0: it did not)\n"),
+    ("      } else if (weights.bsdf && context.lights.environment) {",
+     "      } else if (weights.bsdf && previousBsdfShare > 0.0f && context.lights.environment) {"),
+    ("                    weights.bsdf(previousPdf, pdfLight);\n      }\n      break;",
+     "                    weights.bsdf(previousPdf, pdfLight) / previousBsdfShare;\n      }\n      break;"),
+    ("    } else if (weights.bsdf && maxComponent(emitted) > 0.0f) {",
+     "    } else if (weights.bsdf && previousBsdfShare > 0.0f && maxComponent(emitted) > 0.0f) {"),
+    ("      radiance += throughput * emitted * weights.bsdf(previousPdf, pdfLight);",
+     "      radiance += throughput * emitted * weights.bsdf(previousPdf, pdfLight) / previousBsdfShare;"),
+    ("    const Bsdf bsdf = context.bsdf(*hit, wo);\n",
+     "    const Bsdf bsdf = context.bsdf(*hit, wo);\n"
+     "    // One strategy per vertex: light sampling with probability lightShare, else the BSDF's emission.\n"
+     "    const float lightShare = !weights.bsdf ? 1.0f : !weights.light ? 0.0f : 0.5f;\n"
+     "    const bool takeLight = sampler.next1D() < lightShare;\n"),
+    ("      if (light && light->pdf > 0.0f) {", "      if (takeLight && light && light->pdf > 0.0f) {"),
+    ("                      weights.light(light->pdf, bsdf.pdf(wo, light->wi));",
+     "                      weights.light(light->pdf, bsdf.pdf(wo, light->wi)) / lightShare;"),
+    ("    previousPdf = sample->pdf;\n",
+     "    previousPdf = sample->pdf;\n    previousBsdfShare = takeLight ? 0.0f : 1.0f - lightShare;\n"),
+]
+
 MUTANTS = [
     ("unweighted-bsdf-emission", "emission a BSDF sample finds after a diffuse bounce added in full: counted twice",
      [("      radiance += throughput * emitted * weights.bsdf(previousPdf, pdfLight);",
@@ -38,27 +63,7 @@ MUTANTS = [
     ("one-sample-mis", "Veach's one-sample model, which the handout rules out (tracePathMis keeps both "
      "samples): at each vertex light sampling or the BSDF's emission, each half the time, weighted and divided by "
      "that probability. Unbiased, but where one strategy works its variance is 2 sigma^2 + mu^2, not sigma^2",
-     [("  float previousPdf = 0.0f;\n",
-       "  float previousPdf = 0.0f;\n"
-       "  float previousBsdfShare = 0.0f;  // the probability that the last vertex kept the BSDF's emission (0: it did not)\n"),
-      ("      } else if (weights.bsdf && context.lights.environment) {",
-       "      } else if (weights.bsdf && previousBsdfShare > 0.0f && context.lights.environment) {"),
-      ("                    weights.bsdf(previousPdf, pdfLight);\n      }\n      break;",
-       "                    weights.bsdf(previousPdf, pdfLight) / previousBsdfShare;\n      }\n      break;"),
-      ("    } else if (weights.bsdf && maxComponent(emitted) > 0.0f) {",
-       "    } else if (weights.bsdf && previousBsdfShare > 0.0f && maxComponent(emitted) > 0.0f) {"),
-      ("      radiance += throughput * emitted * weights.bsdf(previousPdf, pdfLight);",
-       "      radiance += throughput * emitted * weights.bsdf(previousPdf, pdfLight) / previousBsdfShare;"),
-      ("    const Bsdf bsdf = context.bsdf(*hit, wo);\n",
-       "    const Bsdf bsdf = context.bsdf(*hit, wo);\n"
-       "    // One strategy per vertex: light sampling with probability lightShare, else the BSDF's emission.\n"
-       "    const float lightShare = !weights.bsdf ? 1.0f : !weights.light ? 0.0f : 0.5f;\n"
-       "    const bool takeLight = sampler.next1D() < lightShare;\n"),
-      ("      if (light && light->pdf > 0.0f) {", "      if (takeLight && light && light->pdf > 0.0f) {"),
-      ("                      weights.light(light->pdf, bsdf.pdf(wo, light->wi));",
-       "                      weights.light(light->pdf, bsdf.pdf(wo, light->wi)) / lightShare;"),
-      ("    previousPdf = sample->pdf;\n",
-       "    previousPdf = sample->pdf;\n    previousBsdfShare = takeLight ? 0.0f : 1.0f - lightShare;\n")]),
+     ONE_SAMPLE_EDITS),
     ("sky-pdf-without-choice", "oneLightPdf for a ray that escapes: the sky's density without its choice probability",
      [("  return lights.environment ? choice * lights.environment->pdf(wi) : 0.0f;",
        "  return lights.environment ? lights.environment->pdf(wi) : 0.0f;")]),
@@ -74,6 +79,18 @@ MUTANTS = [
     ("throughput-cos-from-geometric-normal", "the BSDF sample's throughput cosine taken with the geometric normal, not the shading normal",
      [("    const float cosine = std::abs(glm::dot(sample->wi, bsdf.normal()));",
        "    const float cosine = std::abs(glm::dot(sample->wi, hit->geometricNormal));")]),
+    ("one-sample-mis-noisy-strategies", "Veach's one-sample model (one-sample-mis), hidden behind zero-mean noise on "
+     "the strategies run alone: on a one-bounce render of the plates, each single strategy's radiance gets +2.5 and "
+     "-2.5 in turn (a pixel's 128 samples: its mean unchanged), so that their variance, which MIS is judged "
+     "against, grows past MIS's own",
+     ONE_SAMPLE_EDITS + [
+         ("  return radiance;\n}\n\n}  // namespace pathlab",
+          "  // Noise on a strategy run alone, where the plates' test measures it: the mean stays, the variance grows.\n"
+          "  if (context.settings.maxDepth == 1 && context.scene.spheres.size() == 4 && (!weights.light || !weights.bsdf)) {\n"
+          "    static thread_local unsigned flip = 0;\n"
+          "    radiance += Color((flip++ & 1) ? -2.5f : 2.5f);\n"
+          "  }\n"
+          "  return radiance;\n}\n\n}  // namespace pathlab")]),
 ]
 
 ALTERNATES = [

@@ -72,7 +72,8 @@ float floatMeanTolerance(const std::vector<Color>& values, uint32_t n) {
   return 3.0f * float(n + 1) * 0x1p-24f * largest;
 }
 
-Expected expectedStop(const std::vector<Color>& values, const AdaptiveSettings& a) {
+// `slack`: how close (relative) the rule's two sides count as equal, for `ambiguous`.
+Expected expectedStop(const std::vector<Color>& values, const AdaptiveSettings& a, double slack = 1e-9) {
   Expected e;
   double mean = 0.0, m2 = 0.0;
   DVec3 sum(0.0);
@@ -89,7 +90,7 @@ Expected expectedStop(const std::vector<Color>& values, const AdaptiveSettings& 
     if (n < a.minSpp) continue;
     const double variance = n > 1 ? m2 / (n - 1) : 0.0;
     const double half = 1.96 * std::sqrt(variance / n), bound = a.tolerance * mean;
-    if (std::abs(half - bound) <= 1e-9 * std::max({std::abs(half), std::abs(bound), 1e-300})) e.ambiguous = true;
+    if (std::abs(half - bound) <= slack * std::max({std::abs(half), std::abs(bound), 1e-300})) e.ambiguous = true;
     e.confident = half <= bound;
   }
   e.n = n;
@@ -368,11 +369,23 @@ TEST_CASE("T11.3 pixel: the rule's bias stays under its bound (many pixels of on
   // estimates are judged here, so each pixel's whole sequence goes with the
   // request, 500 pixels at a time (with all 6,000 in one call the judge and
   // the candidate held 420 MB).
+  // Served all at once, the judge does not see which samples a pixel took:
+  // an estimate tied to none (a constant 1), or the plain mean of all 1,024
+  // (unbiased, and not adaptive), would pass the mean alone. So each
+  // estimate must also be the mean of the samples the judge's own rule stops
+  // at (the handout pins it: the first whole batch past the minimum where
+  // 1.96 s / sqrt(n) <= tolerance x mean, or the maximum), within a float
+  // mean's rounding (floatMeanTolerance), and pixel.samples must be that n.
+  // Pixels where the rule's two sides are equal to a float's rounding
+  // (1e-6: the rule's sides in float, a correct variant, differ from the
+  // judge's double by about 1e-7) are not asked (expectedStop's `ambiguous`:
+  // none of these 6,000 on the reference).
   const AdaptiveSettings a = settings(0.15, 16, 64, 1024);
   Random random(31);
   MeanEstimate estimates;
   double spp = 0.0;
-  int overran = 0;
+  int overran = 0, judged = 0, offMean = 0, offCount = 0;
+  std::string firstOff;
   for (int batch = 0; batch < 12; ++batch) {
     std::vector<std::vector<Color>> sequences;
     for (int k = 0; k < 500; ++k) {
@@ -380,14 +393,36 @@ TEST_CASE("T11.3 pixel: the rule's bias stays under its bound (many pixels of on
       for (uint32_t i = 0; i < a.maxSpp; ++i) values.push_back(Color(float(-std::log(1.0 - random.uniform()))));
       sequences.push_back(std::move(values));
     }
-    for (const candidate::ServedPixel& r : candidate::samplePixels(sequences, a, candidate::Serving::AllAtOnce)) {
+    const std::vector<candidate::ServedPixel> results =
+        candidate::samplePixels(sequences, a, candidate::Serving::AllAtOnce);
+    for (size_t k = 0; k < results.size(); ++k) {
+      const candidate::ServedPixel& r = results[k];
       overran += r.overran ? 1 : 0;
       estimates.add(double(r.pixel.estimate.x));
       spp += double(r.pixel.samples) / 6000.0;
+      const Expected e = expectedStop(sequences[k], a, 1e-6);
+      if (e.ambiguous) continue;
+      ++judged;
+      const bool meanRight = near(Vec3(r.pixel.estimate), Vec3(e.mean), floatMeanTolerance(sequences[k], e.n));
+      offMean += meanRight ? 0 : 1;
+      offCount += r.pixel.samples == e.n ? 0 : 1;
+      if ((!meanRight || r.pixel.samples != e.n) && firstOff.empty()) {
+        firstOff = "pixel " + std::to_string(500 * batch + int(k)) + ": the rule stops it at n = " +
+                   std::to_string(e.n) + " with mean " + str(Color(e.mean)) + "; yours returned " +
+                   str(r.pixel.estimate) + " and said " + std::to_string(r.pixel.samples) + " samples";
+      }
     }
   }
   HINT("a pixel kept asking for samples far past settings.maxSpp: stop there whatever the rule says");
   REQUIRE(overran == 0);
+  INFO(judged << " pixels judged: " << offMean << " estimates are not the mean of the samples the rule stops at, "
+              << offCount << " say another count; the first: " << firstOff);
+  HINT("each estimate must be the mean of exactly the samples the pixel took, up to where the rule stops it (the "
+       "first whole batch past the minimum where it holds, or the maximum), and pixel.samples that count: an "
+       "estimate of every sample up to the maximum, of some other number of them, or of none fails here");
+  CHECK(judged > 5900);
+  CHECK(offMean == 0);
+  CHECK(offCount == 0);
   limitNoise(estimates, "11-adaptive-sampling");
   HINT("the estimates are biased: the estimate must be the plain mean of the samples taken, and the rule checked "
        "only after whole batches past the minimum (checked after every sample, it stops on one sample's luck)");

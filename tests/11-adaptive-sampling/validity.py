@@ -7,6 +7,11 @@ MUTANTS = [
     ("nominal-spp-divisor", "the colour sum divided by the maximum, not by the samples the pixel took",
      [("if (stats.n > 0) pixel.estimate = Color(sum / double(stats.n));",
        "if (stats.n > 0) pixel.estimate = Color(sum / double(settings.maxSpp));")]),
+    ("estimate-of-every-sample", "the estimate the mean of all maxSpp samples, not of the n the rule stopped at "
+     "(unbiased, and not adaptive: the count says n, the colour is the maximum's)",
+     [("  if (stats.n > 0) pixel.estimate = Color(sum / double(stats.n));",
+       "  glm::dvec3 all(0.0);\n  for (uint32_t i = 0; i < settings.maxSpp; ++i) all += glm::dvec3(sample(i));\n"
+       "  if (settings.maxSpp > 0) pixel.estimate = Color(all / double(settings.maxSpp));")]),
     ("population-variance", "M2 / n: the population variance, biased low",
      [("return stats.n > 1 ? stats.m2 / double(stats.n - 1) : 0.0;", "return stats.n > 1 ? stats.m2 / double(stats.n) : 0.0;")]),
     ("checked-every-sample", "the rule checked after every sample, not after each batch",

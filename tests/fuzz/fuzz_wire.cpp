@@ -100,11 +100,12 @@ std::vector<Case> makeCases() {
   const std::vector<Point3> positions = {Point3(0.0f), Point3(1, 0, 0), Point3(0, 1, 0)};
   const std::vector<glm::uvec3> triangles = {glm::uvec3(0, 1, 2), glm::uvec3(0, 2, 1)};
   const std::vector<Ray> meshRays(4, Ray{Point3(0.2f, 0.2f, 1.0f), Vec3(0, 0, -1)});
-  cases.push_back(caseOf<calls::MeshHits>({{positions, triangles, meshRays}}, {{{1.0f, 1.0f}, {1.0f}, {}, {1.0f}}}));
+  using Hits = std::vector<calls::MeshHit>;
+  cases.push_back(caseOf<calls::MeshHits>({{positions, triangles, meshRays}},
+                                          {{Hits{{0u, 1.0f}, {1u, 1.0f}}, Hits{{0u, 1.0f}}, Hits{}, Hits{{1u, 1.0f}}}}));
 
   const std::vector<calls::DirectQuery> queries(2);
-  cases.push_back(caseOf<calls::ShadowRays>({{scene, calls::TraceSettings{}, queries}},
-                                            {{{{Ray{Point3(0.0f), Vec3(0, 1, 0)}, Interval{0.0f, 1.0f}}}, {}}}));
+  cases.push_back(caseOf<calls::ShadowRays>({{scene, calls::TraceSettings{}, queries}}, {{Color(0.5f), Color(0.0f)}}));
   AdaptivePixel pixel;
   pixel.samples = 3;
   cases.push_back(caseOf<calls::SamplePixels>({{std::vector<std::vector<Color>>(3), AdaptiveSettings{}}}, {{pixel, pixel, pixel}}));

@@ -16,7 +16,8 @@
 //
 // While it computes an answer, the candidate may ask the judge for data the
 // judge serves only when asked, so that the judge itself counts what was
-// taken (task 11's samples, served a batch at a time):
+// taken (task 3's primitive tests and task 4's shadow rays, one per ask;
+// task 11's samples, a batch at a time):
 //   ask:      Header{kResponseMagic, Status::Asks, payload size}  payload
 //   reply:    Header{kRequestMagic, kReplyId, payload size}  payload
 // and then goes on to its answer.

@@ -15,6 +15,27 @@ inline TraceContext contextFor(const test::Rig& rig, const calls::TraceSettings&
   return rig.context(settings.maxDepth, settings.lightSamples);
 }
 
+// ShadowRays' ray queries: closest hits from the candidate's own tree, every
+// occlusion query asked of the judge (trace_calls.h), which traces it
+// itself and records it for the estimate being computed.
+class JudgedOcclusion final : public RayQueries {
+ public:
+  explicit JudgedOcclusion(const RayQueries& own) : own_(own) {}
+  uint32_t query = 0;  // the estimate being computed: its index in the request
+
+  std::optional<Hit> closestHit(const Ray& ray, Interval range) const override { return own_.closestHit(ray, range); }
+  bool anyHit(const Ray& ray, Interval range) const override {
+    wire::Writer question;
+    question.put(query);
+    question.put(ray);
+    question.put(range);
+    return wire::Reader(ask(question.bytes())).get<bool>();
+  }
+
+ private:
+  const RayQueries& own_;
+};
+
 inline void serveTraceCalls(Server& server) {
   server.serve<calls::DirectLighting>(
       [](const Scene& scene, const calls::TraceSettings& settings, const std::vector<calls::DirectQuery>& queries) {
@@ -31,20 +52,19 @@ inline void serveTraceCalls(Server& server) {
   server.serve<calls::ShadowRays>(
       [](const Scene& scene, const calls::TraceSettings& settings, const std::vector<calls::DirectQuery>& queries) {
         const test::Rig rig(scene);
-        TraceContext context = contextFor(rig, settings);
-        std::vector<std::vector<calls::ShadowQuery>> rays;
-        std::vector<TracedRay> log;
-        context.log = &log;
-        for (const auto& [hit, wo, pixel, seed] : queries) {
-          log.clear();
+        const TraceContext own = contextFor(rig, settings);
+        JudgedOcclusion judged(own.queries);
+        TraceContext context(rig.scene(), judged, rig.lights(), own.lobes);
+        context.settings = own.settings;
+        std::vector<Color> estimates;
+        for (size_t q = 0; q < queries.size(); ++q) {
+          const auto& [hit, wo, pixel, seed] = queries[q];
+          judged.query = uint32_t(q);
           const Bsdf bsdf(rig.scene().materials.at(hit.material), hit, wo, kLinkedTasks.lobes);
           Sampler sampler(pixel, 0, seed);
-          estimateDirectLighting(context, hit, bsdf, wo, sampler);
-          rays.emplace_back();
-          for (const TracedRay& traced : log)
-            if (traced.shadow) rays.back().emplace_back(traced.ray, traced.range);
+          estimates.push_back(estimateDirectLighting(context, hit, bsdf, wo, sampler));
         }
-        return rays;
+        return estimates;
       });
   server.serve<calls::TracePaths>(
       [](const Scene& scene, const calls::TraceSettings& settings, const std::vector<calls::PathQuery>& queries) {
