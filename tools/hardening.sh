@@ -9,7 +9,10 @@
 #          GUI's background workers, and the grader on task 5 (with the same
 #          TSan build; the course repository only).
 #   fuzz   libFuzzer: each of the five targets for RUNS executions (default
-#          2000), with the seed fixed at 1 so the job is repeatable.
+#          2000), with the seed fixed at 1 so the job is repeatable; then the
+#          generated adversary (tools/adversary, docs/adversary.md): hostile
+#          answers drawn per commit from the judges' wire schema, against
+#          the release build's judges (the course repository only).
 # Installs clang and its sanitizer runtime if missing (Debian packages).
 #   tools/hardening.sh [RUNS] [asan] [tsan] [fuzz]     (no job named: all three)
 set -euo pipefail
@@ -68,7 +71,13 @@ for job in "${jobs[@]}"; do
       fi ;;
     fuzz)
       step "fuzzing, $runs executions per target"
-      tools/fuzz "$runs" 1 ;;  # a fixed seed: the CI run is repeatable
+      tools/fuzz "$runs" 1  # a fixed seed: the CI run is repeatable
+      if [[ -x tools/adversary && -d build/tests ]]; then  # the course repository, after the README's tests
+        step "the generated adversary: 4 strategies per task drawn for this commit, 1 graded in each sandbox"
+        tools/adversary --build-dir build --sample 4 --seed commit --grade 1
+      elif [[ -x tools/adversary ]]; then
+        echo "the generated adversary: skipped, no release build in build/ (tools/quickstart.sh test makes it)"
+      fi ;;
   esac
 done
 step "hardening jobs passed: ${jobs[*]}"

@@ -343,8 +343,19 @@ TEST_CASE("T2.1 triangle: both faces are hit (no back-face culling)" *
     HINT("rays onto the centroid from both sides must hit: accepting only one sign of det, only edge functions "
          "all >= 0 (not also all <= 0), or a range test that works for one sign of det loses one face (which "
          "one depends on your sign convention)");
-    CHECK(candidate::intersectTriangle(rayTowards(centroid + side, centroid), kAll, p0, p1, p2).has_value());
-    CHECK(candidate::intersectTriangle(rayTowards(centroid - side, centroid), kAll, p0, p1, p2).has_value());
+    for (const DVec3& from : {centroid + side, centroid - side}) {
+      const Ray ray = rayTowards(from, centroid);
+      const std::optional<TriangleHit> hit = candidate::intersectTriangle(ray, kAll, p0, p1, p2);
+      CHECK(hit.has_value());
+      if (!hit) continue;
+      // The hit, not only its presence: the crossing the judge computes (the centroid, 2 away).
+      const PlaneHit truth = planeHit(ray, p0, p1, p2);
+      HINT("a face is hit, but not where the ray crosses it: t must be the distance to the crossing and b1, b2 its "
+           "barycentrics (here the centroid: t = 2, b1 = b2 = 1/3)");
+      CHECK(hit->t == doctest::Approx(truth.t).epsilon(1e-4));
+      CHECK(hit->b1 == doctest::Approx(truth.b1).epsilon(1e-3));
+      CHECK(hit->b2 == doctest::Approx(truth.b2).epsilon(1e-3));
+    }
   }
 }
 

@@ -231,14 +231,18 @@ TEST_CASE("T3.1 box: a ray lying exactly in a slab plane still hits (no NaN miss
         origin[axis] = plane;
         origin[along] = -2.0f;
         ++tried;
-        if (!candidate::intersectBox(box, Ray{origin, d}, 1.0f / d, kAll)) {
+        // A hit where the ray enters the box: 2 units along (a hit at another t is a miss too).
+        const std::optional<float> entry = candidate::intersectBox(box, Ray{origin, d}, 1.0f / d, kAll);
+        if (!entry || std::abs(*entry - 2.0f) > 1e-4f) {
           ++misses;
-          MESSAGE("missed: origin " << str(origin) << ", direction (" << d.x << ", " << d.y << ", " << d.z << ")");
+          MESSAGE((entry ? "entered at t = " + std::to_string(*entry) + ", not 2" : std::string("missed"))
+                  << ": origin " << str(origin) << ", direction (" << d.x << ", " << d.y << ", " << d.z << ")");
         }
       }
     }
   }
-  HINT("rays lying exactly in a box's min or max plane, with +0 or -0 components, must hit (misses listed above): "
+  HINT("rays lying exactly in a box's min or max plane, with +0 or -0 components, must hit it where they enter, at t "
+       "= 2 (misses listed above): "
        "there (plane - o) * inf is NaN, which must leave entry and exit unchanged, and -0 has 1/d = -inf, so a near "
        "plane picked by d < 0 rather than by the sign (std::signbit) is wrong");
   CHECK(misses == 0);

@@ -43,14 +43,14 @@ Scene closedEnclosure(float rho, float Le) {
   return scene;
 }
 
-// Mean (green channel) of tracePath over n camera rays from `origin` in
+// Mean (of the three channels, alike in these grey scenes) of tracePath over n camera rays from `origin` in
 // uniformly random directions.
 MeanEstimate pathMean(TraceContext& context, Point3 origin, int n, uint64_t seed = 5) {
   Random random{uint32_t(seed)};
   std::vector<calls::PathQuery> queries;
   for (int i = 0; i < n; ++i) queries.emplace_back(Ray{origin, Vec3(random.unitVector())}, uint32_t(i), testSeed(seed));
   MeanEstimate m;
-  for (const Color& L : candidate::tracePaths(context, queries)) m.add(L.y);
+  for (const Color& L : candidate::tracePaths(context, queries)) m.addGrey(L);
   limitNoise(m, "05-path-tracing");
   return m;
 }
@@ -304,7 +304,7 @@ TEST_CASE("T5.2 path tracing: white furnace — an albedo-1 sphere in a uniform 
       queries.emplace_back(Ray{origin, Vec3(glm::normalize(target - DVec3(origin)))}, uint32_t(i), testSeed(23));
     }
     MeanEstimate m2;
-    for (const Color& L : candidate::tracePaths(context, queries)) m2.add(L.y);
+    for (const Color& L : candidate::tracePaths(context, queries)) m2.addGrey(L);
     limitNoise(m2, "05-path-tracing");
     const double expected = albedo == 1.0f ? 1.0 : 0.5 * 0.8;  // every ray here hits the sphere
     CAPTURE(albedo);

@@ -122,7 +122,7 @@ std::string lightChoiceProblem(const Scene& scene, const Point3& from,
     std::sort(r.begin(), r.end());
     const double choice = r[r.size() / 2];
     size_t off = 0;
-    for (double x : r) off += std::abs(x - choice) > 1e-2 * choice ? 1 : 0;
+    for (double x : r) off += std::abs(x - choice) <= 1e-2 * choice ? 0 : 1;
     total += choice;
     if (off > r.size() / 50) {
       problem << "towards " << (light < 0 ? std::string("the sky") : "area light " + std::to_string(light)) << ", "
@@ -131,7 +131,7 @@ std::string lightChoiceProblem(const Scene& scene, const Point3& from,
       return problem.str();
     }
   }
-  if (std::abs(total - 1.0) > 1e-2) {
+  if (!(std::abs(total - 1.0) <= 1e-2)) {
     problem << "the lights' choice probabilities (each sample's pdf over its light's own density) sum to " << total
             << ", not 1";
   }
@@ -438,13 +438,13 @@ TEST_CASE("T9.2 one light: its density is 0 towards a light's back, a surface th
 
 namespace {
 
-// Mean (green) of tracePathMis with `estimator` over camera rays from `origin`
+// Mean (over the channels: the scenes are grey) of tracePathMis with `estimator` over camera rays from `origin`
 // to points spread over `targets`.
 MeanEstimate misMean(TraceContext& context, MisEstimator estimator, const std::vector<Ray>& rays, uint64_t seed) {
   std::vector<calls::PathQuery> queries;
   for (size_t i = 0; i < rays.size(); ++i) queries.emplace_back(rays[i], uint32_t(i), testSeed(seed));
   MeanEstimate m;
-  for (const Color& L : candidate::tracePathsMis(context, estimator, queries)) m.add(L.y);
+  for (const Color& L : candidate::tracePathsMis(context, estimator, queries)) m.addGrey(L);
   limitNoise(m, "09-mis");
   return m;
 }

@@ -13,6 +13,8 @@ folders is edited, and then
      alternate accepted (tests/lab/check_lab.py --task);
   3. `tools/grade --tasks 13` gives the stub 0 and the reference full marks,
      and `tools/check --tasks 13` grades the stub the same as tools/grade;
+     the generated adversary finds its calls and no strategy of 12 drawn
+     scores more than the stub (`tools/adversary --tasks 13`);
   4. `make-student-release --tasks 13` holds its files and hands it out, and
      reads as a complete course (tests/docs/check_release_text.py);
      `make-zip.sh --tasks 13` packs its folders for Gradescope, and the
@@ -140,6 +142,11 @@ def grade():
            f"{sum(t['max_score'] for t in checked.get('tests', []))}, tools/grade: {scores['tasks']}")
     print(f"  grades: stub {scores['tasks'][0]}/{scores['tasks'][1]}, reference {scores['solutions'][0]}/"
           f"{scores['solutions'][1]}; tools/check on the stub {checked.get('score')}")
+    # The generated adversary takes the task from its wire schema, as it does every task (docs/adversary.md).
+    adversary = run([sys.executable, copy / "tools/adversary", "--build-dir", build, "--tasks", str(N), "--sample", "12"],
+                    check=False, what=f"tools/adversary --tasks {N}")
+    expect(adversary.returncode == 0 and f"task {N}: 12 strategies, 0 survivors" in adversary.stdout,
+           f"tools/adversary --tasks {N}: {adversary.stdout[-1500:]}")
 
 
 def release_and_zip(git):

@@ -64,6 +64,7 @@ struct Fields<test::PixelMoments> {
   static auto tie(test::PixelMoments& s) {
     return std::tie(s.width, s.height, s.spp, s.mean, s.varianceOfMean, s.nonFinite, s.usedBvh);
   }
+  static constexpr const char* names = "width, height, spp, mean, varianceOfMean, nonFinite, usedBvh";
 };
 }  // namespace pathlab::wire
 

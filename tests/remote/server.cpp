@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -26,6 +27,13 @@ std::string ask(const std::string& question) {
     throw std::runtime_error("the judge did not reply to an ask");
   }
   return reply;
+}
+
+std::string Server::schema() const {
+  std::map<uint32_t, std::string> ordered(schemas_.begin(), schemas_.end());
+  std::string json;
+  for (const auto& [id, call] : ordered) json += (json.empty() ? "{\"" : ",\"") + std::to_string(id) + "\":" + call;
+  return json + "}";
 }
 
 int Server::run(int requestFd, int responseFd) {
@@ -65,7 +73,13 @@ int Server::run(int requestFd, int responseFd) {
 
 }  // namespace pathlab::remote
 
-int main() {
+int main(int argc, char** argv) {
+  if (argc == 2 && std::string(argv[1]) == "--wire-schema") {  // what tools/adversary reads
+    pathlab::remote::Server server;
+    pathlab::remote::registerCalls(server);
+    std::printf("%s\n", server.schema().c_str());
+    return 0;
+  }
   pathlab::remote::candidateDiesWithJudge();
 #if defined(__GLIBC__)
   // Reuse the memory of one batch for the next (see judge.cpp).

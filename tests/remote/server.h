@@ -12,6 +12,7 @@
 
 #include "call.h"
 #include "wire.h"
+#include "wire_schema.h"
 
 namespace pathlab::remote {
 
@@ -20,6 +21,7 @@ class Server {
   // Serves call C with f, which takes C's arguments and returns its result.
   template <class C, class F>
   void serve(F f) {
+    schemas_[C::id] = std::string("{\"name\":\"") + C::name + "\",\"answer\":" + wire::schemaOf<typename C::Result>() + "}";
     handlers_[C::id] = [f](wire::Reader& in, wire::Writer& out) {
       const size_t count = in.count(1);
       std::vector<typename C::Args> items(count);
@@ -30,8 +32,12 @@ class Server {
   }
   // Answers requests on requestFd until it closes; returns the exit code.
   int run(int requestFd, int responseFd);
+  // {"ID": {"name": ..., "answer": schema}, ...}: the calls served and the shape of one result of each
+  // (an answer is the request's count of results; wire_schema.h).
+  std::string schema() const;
 
  private:
+  std::unordered_map<uint32_t, std::string> schemas_;
   std::unordered_map<uint32_t, std::function<void(wire::Reader&, wire::Writer&)>> handlers_;
 };
 

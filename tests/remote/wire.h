@@ -288,6 +288,7 @@ void Writer::put(const T& value) { write(*this, value); }
   template <>                                                \
   struct Fields<Type> {                                      \
     static auto tie(Type& s) { return std::tie(__VA_ARGS__); } \
+    static constexpr const char* names = #__VA_ARGS__;       \
   }
 
 PATHLAB_WIRE_FIELDS(Interval, s.min, s.max);

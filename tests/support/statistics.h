@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <numeric>
 #include <sstream>
@@ -35,14 +36,26 @@ class MeanEstimate {
     mean_ += delta / double(n_);
     m2_ += delta * (x - mean_);
   }
+  // A grey scene's radiance, as the mean of its three channels, which must
+  // agree: a correct estimator treats them alike there (one channel alone,
+  // as these tests once took, let 1 in green and 0 elsewhere pass "L = 1";
+  // an average alone, a red that makes up for a blue). An answer whose
+  // channels differ is counted, and makes the mean NaN.
+  void addGrey(const Color& c) {
+    const double r = c.x, g = c.y, b = c.z, mean = (r + g + b) / 3.0;
+    const double spread = std::max({std::abs(r - mean), std::abs(g - mean), std::abs(b - mean)});
+    if (!(spread <= 1e-4 * std::abs(mean) + 1e-6)) ++unequalChannels_;
+    add(mean);
+  }
   size_t count() const { return n_; }
-  double mean() const { return mean_; }
+  // NaN, which no comparison passes, once an answer's channels differed.
+  double mean() const { return unequalChannels_ == 0 ? mean_ : std::numeric_limits<double>::quiet_NaN(); }
   double variance() const { return n_ > 1 ? m2_ / double(n_ - 1) : 0.0; }
   double standardError() const { return n_ > 0 ? std::sqrt(variance() / double(n_)) : 0.0; }
 
   // Every sample exactly v (e.g. no light at all: not a mean of 0 from
   // +1e10 and -1e10).
-  bool allExactly(double v) const { return n_ > 0 && min_ == v && max_ == v; }
+  bool allExactly(double v) const { return n_ > 0 && unequalChannels_ == 0 && min_ == v && max_ == v; }
 
   // The largest variance per sample a correct estimator can have here
   // (reference_noise.h): the checks judge the mean with at most this much
@@ -75,12 +88,16 @@ class MeanEstimate {
   // estimators). Five sigma: a correct estimator fails with probability
   // 5.7e-7 per check.
   bool agrees(double expected, double sigmas = 5.0) const {
-    return std::abs(mean_ - expected) <= sigmas * judgedStandardError() + 1e-6 * std::max(1.0, std::abs(expected));
+    return std::abs(mean() - expected) <= sigmas * judgedStandardError() + 1e-6 * std::max(1.0, std::abs(expected));
   }
   std::string describe(double expected) const {
     std::ostringstream s;
     s << "mean " << mean_ << " +- " << standardError() << " (1 sigma, " << n_ << " samples), expected " << expected
       << ", off by " << (standardError() > 0 ? std::abs(mean_ - expected) / standardError() : 0.0) << " sigma";
+    if (unequalChannels_ > 0) {
+      s << "; " << unequalChannels_ << " answers have channels that differ, in a grey scene where a correct estimate "
+        << "has all three alike";
+    }
     if (tooNoisy()) {
       s << "; its variance per sample, " << variance() << ", is above " << ceiling_
         << ", the most a correct estimator has here, so it is judged with " << judgedStandardError()
@@ -90,7 +107,7 @@ class MeanEstimate {
   }
 
  private:
-  size_t n_ = 0;
+  size_t n_ = 0, unequalChannels_ = 0;
   double mean_ = 0.0, m2_ = 0.0;
   double min_ = 0.0, max_ = 0.0;
   double ceiling_ = kInfinity;
