@@ -167,23 +167,26 @@ def prairielearn(results: dict, pictures_folder: Path, limit: int = PRAIRIELEARN
 # ---------------------------------------------------------------- GitHub Classroom
 
 def classroom(results: dict, tasks) -> dict:
-    """{"taskN": base64 JSON} for GitHub Classroom's grading reporter (classroom-resources/
-    autograding-grading-reporter): one runner per task, its max_score the task's points and a test per
-    visible grader test with its score, the task's hidden tests (shown()) one more, "Task N: hidden tests",
-    with their score summed and no message; the reporter adds the runners' scores up and reports them to
-    the classroom."""
+    """What GitHub Classroom records and shows (tools/classroom/report): per task its points and most, and
+    a line per visible test with its points; a task's hidden tests (shown()) are one line, "Task N: hidden
+    tests", their points summed, no output. {"tasks": [{"task", "score", "max_score", "tests": [{"name",
+    "score", "max_score", "passed", "output"}]}], "score", "max_score", "passed"}."""
     passed = lambda t: t["score"] >= t["max_score"]
-    out = {}
+    report = {"tasks": [], "score": 0, "max_score": 0, "passed": True}
     for n in tasks:
         mine = [t for t in results["tests"] if task_of(t) == n]
         hidden = [t for t in mine if not shown(t.get("visibility"))]
-        tests = [{"name": t["name"], "status": "pass" if passed(t) else "fail", "score": t["score"],
-                  "message": "" if passed(t) else t.get("output", "")[-2000:]}
+        lines = [{"name": t["name"], "score": t["score"], "max_score": t["max_score"], "passed": passed(t),
+                  "output": "" if passed(t) else t.get("output", "")[-2000:]}
                  for t in mine if shown(t.get("visibility"))]
         if hidden:
-            tests.append({"name": f"Task {n}: {HIDDEN}", "status": "pass" if all(map(passed, hidden)) else "fail",
-                          "score": sum(t["score"] for t in hidden), "message": ""})
-        payload = {"version": 1, "max_score": sum(t["max_score"] for t in mine),
-                   "status": "pass" if all(map(passed, mine)) else "fail", "tests": tests}
-        out[f"task{n}"] = base64.b64encode(json.dumps(payload).encode()).decode()
-    return out
+            lines.append({"name": f"Task {n}: {HIDDEN}", "score": sum(t["score"] for t in hidden),
+                          "max_score": sum(t["max_score"] for t in hidden), "passed": all(map(passed, hidden)),
+                          "output": ""})
+        task = {"task": n, "score": sum(t["score"] for t in mine), "max_score": sum(t["max_score"] for t in mine),
+                "tests": lines}
+        report["tasks"].append(task)
+        report["score"] += task["score"]
+        report["max_score"] += task["max_score"]
+        report["passed"] = report["passed"] and all(map(passed, mine))
+    return report

@@ -105,6 +105,16 @@ def title(number: int, root: Path = ROOT) -> str:
     return match.group(1)
 
 
+def handout_points(number: int, root: Path = ROOT) -> int:
+    """The points of task `number`'s suite as its handout states them ("## Tests (N points)", which
+    tools/handout-tables keeps equal to the suite): what a grade that could not run is out of."""
+    folder = tasks(root)[number][0]
+    match = re.search(r"^## Tests \((\d+) points\)", (root / "tasks" / folder / "README.md").read_text(), re.M)
+    if not match:
+        raise SystemExit(f"pathlab_tasks: tasks/{folder}/README.md has no heading '## Tests (N points)'")
+    return int(match.group(1))
+
+
 def ci_allowance(stage: str, root: Path = ROOT) -> int:
     """The seconds every task's task.json adds to CI's stage `stage` (.ci/run; docs/ci.md)."""
     return sum(manifest(n, root)["ci"].get(stage, 0) for n in tasks(root))
@@ -135,8 +145,10 @@ def parse_task_list(text: str, known, what: str = "--tasks") -> list:
         raise SystemExit(f"{what} '{text}': expected task numbers like 1,2,3")
     if not chosen:
         raise SystemExit(f"{what} '{text}': lists no task")
-    if not set(chosen) <= set(known):
-        raise SystemExit(f"{what} '{text}': the tasks are {min(known)} to {max(known)}")
+    unknown = [n for n in chosen if n not in known]
+    if unknown:
+        raise SystemExit(f"{what} '{text}': there is no task {unknown[0]} in tasks/ (the tasks are {min(known)} to "
+                         f"{max(known)}; a course's own task is made with tools/new-task)")
     return chosen
 
 

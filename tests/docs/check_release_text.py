@@ -16,7 +16,9 @@ the release (no build), and then
     handed out, or its handout keeps "## The recipe" (its maths);
   - the recipes the extension tasks lean on are there whole: task 4's
     shadow-ray contract and task 5's Russian roulette.
-And docs/submitting.md's rule for a task's file holds for every task.
+And the release's own CTests that need no build pass there (task-defaults,
+docs-paths, ...), and docs/submitting.md's rule for a task's file holds for
+every task.
 
 usage: check_release_text.py REPOSITORY [--tasks 5,9 ...]"""
 import re
@@ -25,7 +27,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-SUBSETS = ["1,2,3,4,5,6,7", "8,9,10,11,12", "5,9", "1,12", "3,9,12"]
+SUBSETS = ["1,2,3,4,5,6,7", "8,9,10,11,12", "5,9", "1,12", "3,9,12", "1,2,3,4,5,9"]
 RECIPE_MUST_HOLD = {4: ["offsetRayOrigin", "1 − 10⁻⁴"], 5: ["Russian roulette", "divide the throughput by q"]}
 LINK = re.compile(r"\[[^\]]*\]\(([^)\s]+)\)")
 
@@ -33,6 +35,38 @@ LINK = re.compile(r"\[[^\]]*\]\(([^)\s]+)\)")
 def handouts(release: Path):
     """{task number: handout path}."""
     return {int(p.parent.name[:2]): p for p in sorted(release.glob("tasks/[0-9][0-9]-*/README.md"))}
+
+
+def own_build_free_tests(release: Path) -> list:
+    """The release's own CTests that need no build (a script of tests/docs/ given only the source
+    folder), run there as its ctest runs them: a student's ctest shows no failure that is no task's."""
+    problems = []
+    for name, script in registered_build_free_tests(release):
+        ran = subprocess.run([sys.executable, str(release / "tests" / script), str(release)], capture_output=True,
+                             text=True, cwd=release, timeout=300)
+        if ran.returncode != 0:
+            problems.append(f"the release's own CTest {name} fails: {(ran.stdout + ran.stderr).strip()[-400:]}")
+    return problems
+
+
+def registered_build_free_tests(release: Path) -> list:
+    """(name, script) of each such test tests/CMakeLists.txt registers in the release: inside an
+    if(EXISTS ${CMAKE_SOURCE_DIR}/PATH) only where PATH is there (other conditions taken as true)."""
+    found, enclosing = [], []
+    test = re.compile(r"add_test\(NAME ([\w-]+) COMMAND \$\{Python3_EXECUTABLE\}\s+"
+                      r"\$\{CMAKE_CURRENT_SOURCE_DIR\}/(docs/[\w-]+\.py)\s+\$\{CMAKE_SOURCE_DIR\}\s*\)")
+    lines = (release / "tests" / "CMakeLists.txt").read_text().splitlines()
+    for i, line in enumerate(lines):
+        stripped = line.strip()
+        if stripped.startswith("if("):
+            paths = re.findall(r"EXISTS \$\{CMAKE_SOURCE_DIR\}/(\S+?)\)?(?:\s|$)", stripped)
+            enclosing.append(all((release / path).exists() for path in paths))
+        elif stripped.startswith("endif("):
+            enclosing.pop()
+        match = test.match(stripped + " " + " ".join(l.strip() for l in lines[i + 1:i + 2]))
+        if match and all(enclosing):
+            found.append((match.group(1), match.group(2)))
+    return found
 
 
 def check_subset(repo: Path, subset: str, scratch: Path) -> list:
@@ -49,10 +83,15 @@ def check_subset(repo: Path, subset: str, scratch: Path) -> list:
     if paths.returncode != 0:
         problems += [line for line in paths.stdout.splitlines() if "does not exist" in line]
 
+    problems += own_build_free_tests(release)
+
     pages = [release / "README.md"] + sorted((release / "docs").glob("*.md")) + list(handouts(release).values())
     for page in pages:
         if "course repository only" in page.read_text() or "student release only" in page.read_text():
             problems.append(f"{page.relative_to(release)}: a course/release marker is left in the release")
+        if re.search(r"@[A-Z_]+@", page.read_text()):
+            problems.append(f"{page.relative_to(release)}: a placeholder left unfilled: "
+                            f"{re.search(r'@[A-Z_]+@', page.read_text()).group(0)}")
         prose = re.sub(r"`[^`\n]*`", "", re.sub(r"^```.*?^```", "", page.read_text(), flags=re.S | re.M))
         for target in LINK.findall(prose):  # links outside code
             if re.match(r"[a-z]+:", target) or target.startswith("#"):

@@ -20,15 +20,15 @@ student's own other task (a helper in another task's file), loses that
 task's points as Gradescope's grader does (the rules are the grader's).
 The half-done submission also goes through GitHub Classroom's workflow (the
 release is made with --classroom): its steps run in the student's
-repository as GitHub runs them, and what GitHub's grading reporter reports
-to the classroom is tools/check's points, test by test (classroom()).
+repository as GitHub runs them, and what the last step posts to the
+classroom and shows in the log is tools/check's points, test by test
+(classroom()).
 
 The release and its check's build (build-check/, the judges linked with
 the compiled reference) are made by a first run with --prepare, which CTest
 runs beside gradescope-zip; the comparison runs once both are done.
 
 usage: test_check.py REPO_ROOT WORK_DIR [--prepare] [--keep]"""
-import base64
 import json
 import os
 import re
@@ -42,6 +42,7 @@ import yaml  # Debian's python3-yaml (tools/packages.sh, pathlab_test)
 
 root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
 sys.path.insert(0, str(root / "tests/support"))
+from fake_github import FakeGitHub  # noqa: E402
 from scratch import finish  # noqa: E402
 keep = "--keep" in sys.argv[3:]
 prepare_only = "--prepare" in sys.argv[3:]
@@ -115,23 +116,20 @@ def classroom(submission: Path, mine: dict) -> list:
     """GitHub Classroom's workflow (.github/workflows/classroom.yml, installed by --classroom) on the
     student's repository holding `submission`'s files: its run steps, in order, as GitHub runs them
     (bash in the repository, with GITHUB_OUTPUT and GITHUB_STEP_SUMMARY files; the Install step's
-    packages are here already), then what GitHub's grading reporter does with the step outputs: each
-    runner's TASKN_RESULTS decoded (base64 JSON) and the points added up as it tells the classroom.
-    Every test's points and the total must be tools/check's."""
+    packages are here already), the last against a stand-in for GitHub's API (fake_github.py). The
+    points it posts to the classroom, and the total and every test's points its log shows, must be
+    tools/check's. Then the same step where the check wrote nothing: it must post 0 of the tasks' points."""
     problems = []
     workflow = yaml.safe_load((release / ".github/workflows/classroom.yml").read_text())
     steps = workflow.get("jobs", {}).get("run-autograding-tests", {}).get("steps", [])
-    reporter = [s for s in steps if s.get("uses") == "classroom-resources/autograding-grading-reporter@v1"]
-    runners = reporter[0].get("with", {}).get("runners", "").split(",") if reporter else []
-    env = {k: re.fullmatch(r"\$\{\{ steps\.points\.outputs\.(task\d+) \}\}", v).group(1)
-           for k, v in (reporter[0].get("env", {}) if reporter else {}).items()}
-    if not (workflow.get("name") == "Autograding Tests" and len(reporter) == 1 and
-            runners == [f"task{n}" for n in CORE] and env == {f"{r.upper()}_RESULTS": r for r in runners}):
-        return [f"classroom.yml: not GitHub Classroom's workflow for tasks {CORE} (runners {runners}, env {env})"]
-    runs = [(s["name"], s["run"]) for s in steps if "run" in s]
-    if [name for name, _ in runs][:1] != ["Install"] or len(runs) != 3 or \
-            [s.get("id") for s in steps if "run" in s][2] != "points":
-        return [f"classroom.yml: its run steps are not Install, the grade and the points: {runs}"]
+    runs = [s for s in steps if "run" in s]
+    listed = ",".join(map(str, CORE))
+    if not (workflow.get("name") == "Autograding Tests" and [s["name"] for s in runs][:1] == ["Install"] and
+            len(runs) == 3 and f"tools/check --tasks {listed} " in runs[1]["run"] and
+            runs[2]["run"] == f"python3 tools/classroom/report pathlab-results.json --tasks {listed} --notify" and
+            runs[2].get("if") == "always()" and runs[2].get("env") == {"GITHUB_TOKEN": "${{ github.token }}"} and
+            workflow.get("permissions", {}).get("checks") == "write"):
+        return [f"classroom.yml: not GitHub Classroom's workflow, the check and the points for tasks {CORE}: {runs}"]
     saved = {}
     for n in CORE:  # the student's files in their repository's tasks/ (the stubs put back after)
         folder, name = pathlab_tasks.tasks(root)[n]
@@ -141,43 +139,49 @@ def classroom(submission: Path, mine: dict) -> list:
     outputs, summary = work / "classroom-output", work / "classroom-summary.md"
     outputs.write_text("")
     summary.write_text("")
+    most = sum(t["max_score"] for t in mine["tests"])
+    logs = {}
     try:
-        for name, command in runs[1:]:
-            step = subprocess.run(["bash", "-e", "-c", command], cwd=release, capture_output=True, text=True,
-                                  timeout=1800, env=dict(os.environ, GITHUB_OUTPUT=str(outputs),
-                                                         GITHUB_STEP_SUMMARY=str(summary)))
-            print(f"  classroom.yml step '{name}': exit {step.returncode}")
-            if step.returncode != 0:
-                problems.append(f"classroom.yml step '{name}' failed:\n{step.stdout[-800:]}{step.stderr[-800:]}")
+        with FakeGitHub() as github:
+            for step in runs[1:]:
+                ran = subprocess.run(["bash", "-e", "-c", step["run"]], cwd=release, capture_output=True, text=True,
+                                     timeout=1800, env=dict(os.environ, GITHUB_OUTPUT=str(outputs),
+                                                            GITHUB_STEP_SUMMARY=str(summary), **github.env()))
+                print(f"  classroom.yml step '{step['name']}': exit {ran.returncode}")
+                logs[step["name"]] = ran
+            posted = github.points()
     finally:
         for path, data in saved.items():
             path.write_bytes(data)
-    step_outputs = dict(line.split("=", 1) for line in outputs.read_text().splitlines() if "=" in line)
-    total = maximum = 0
-    seen = {}
-    for runner in runners:  # the reporter: parseRunnerResults, then NotifyClassroom's sum
-        try:
-            result = json.loads(base64.b64decode(step_outputs[env[f"{runner.upper()}_RESULTS"]]))
-        except (KeyError, ValueError) as e:
-            problems.append(f"classroom: runner {runner}'s results do not decode ({e})")
-            continue
-        if not (result.get("version") == 1 and result.get("status") in ("pass", "fail", "error") and
-                isinstance(result.get("max_score"), (int, float)) and isinstance(result.get("tests"), list) and
-                all(isinstance(t.get("name"), str) and t.get("status") in ("pass", "fail", "error") and
-                    isinstance(t.get("score"), (int, float)) for t in result["tests"])):
-            problems.append(f"classroom: runner {runner}'s results are not the reporter's format: {str(result)[:300]}")
-            continue
-        maximum += result["max_score"]
-        total += sum(t["score"] for t in result["tests"])
-        seen.update({t["name"]: t["score"] for t in result["tests"]})
-    want = {t["name"]: t["score"] for t in mine["tests"]}
-    if seen != want or total != mine["score"] or maximum != sum(t["max_score"] for t in mine["tests"]):
-        problems.append(f"classroom: {total:g} of {maximum:g} points reported, tools/check {mine['score']:g}; "
-                        f"tests differ: {[k for k in want if seen.get(k) != want[k]][:3]}")
-    else:
-        print(f"  classroom: {total:g} of {maximum:g} points in {len(runners)} runners, each test tools/check's")
+    points = logs[runs[2]["name"]]
+    # Not full marks: the step fails, as GitHub's reporter fails it; what it posted is what counts.
+    if points.returncode != (0 if mine["score"] == most else 1):
+        problems.append(f"classroom.yml's points step: exit {points.returncode}:\n{points.stdout[-800:]}{points.stderr[-800:]}")
+    if posted != [f"Points {mine['score']:g}/{most:g}"]:
+        problems.append(f"classroom: posted {posted}, tools/check gave {mine['score']:g} of {most:g}")
+    if f"Total points: {mine['score']:g}/{most:g}\n" not in points.stdout:
+        problems.append(f"classroom: the log's total is not tools/check's {mine['score']:g}/{most:g}:\n"
+                        f"{points.stdout[-600:]}")
+    shown_lines = {line.strip() for line in points.stdout.splitlines()}
+    missing = [t["name"] for t in mine["tests"] if
+               f"{'ok  ' if t['score'] >= t['max_score'] else 'FAIL'} {t['score']:g}/{t['max_score']:g}  {t['name']}"
+               .strip() not in shown_lines]
+    if missing:
+        problems.append(f"classroom: the log does not show tools/check's points for {missing[:3]}")
+    if not problems:
+        print(f"  classroom: posted {posted[0]}, the log's total and its {len(mine['tests'])} tests tools/check's")
     if f"### PathLab check: {mine['score']:g} of" not in summary.read_text():
         problems.append("classroom: the grade's table is not on the run's summary page")
+    # A check that wrote nothing (it crashed, or the runner ran out of time): 0 points are posted.
+    with FakeGitHub() as github:
+        crashed = subprocess.run(["bash", "-e", "-c", runs[2]["run"].replace("pathlab-results.json", "no-such.json")],
+                                 cwd=release, capture_output=True, text=True, timeout=300,
+                                 env=dict(os.environ, **github.env()))
+        posted = github.points()
+    handouts = sum(pathlab_tasks.handout_points(n, release) for n in CORE)
+    if crashed.returncode != 1 or posted != [f"Points 0/{handouts}"]:
+        problems.append(f"classroom: with no results the points step exited {crashed.returncode} and posted {posted}, "
+                        f"not Points 0/{handouts}:\n{crashed.stderr[-600:]}")
     return problems
 
 

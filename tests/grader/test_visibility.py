@@ -9,8 +9,8 @@ A synthetic results.json of two tasks: visible tests, and "hidden",
 carry the marker SECRET, one naming a failure picture whose bytes carry it
 too. Every adapter's student-facing output (Autolab's problems, the yml and
 autograde.tar make-autograder writes, grade-job's feedback and autoresult;
-PrairieLearn's results; Classroom's payloads, also through
-tools/classroom/report) must hold no marker (base64 payloads decoded, the
+PrairieLearn's results; Classroom's report, also through
+tools/classroom/report, and what it posts) must hold no marker (the
 secret picture looked for as its data URL), keep the visible tests with
 their scores, total the grader's points (hidden ones included) and, per test
 on Autolab, fold a task's hidden tests into one problem "Task N: hidden tests".
@@ -23,6 +23,7 @@ import importlib.machinery
 import importlib.util
 import io
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -33,7 +34,9 @@ from pathlib import Path
 root, work = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
 sys.dont_write_bytecode = True  # no __pycache__ left in the tree's tools/
 sys.path.insert(0, str(root / "tools"))
+sys.path.insert(0, str(root / "tests/support"))
 import pathlab_results  # noqa: E402
+from fake_github import FakeGitHub  # noqa: E402
 
 MARK = "SECRET"
 failures = []
@@ -54,10 +57,6 @@ def load_script(path: Path):
 
 def leaks(what, text):
     check(MARK not in text and secret_png not in text, f"{what}: a hidden test shows:\n{text[:1500]}")
-
-
-def decoded(payloads: dict) -> str:
-    return "\n".join(base64.b64decode(p).decode() for p in payloads.values())
 
 
 scratch = Path(tempfile.mkdtemp(prefix="visibility-", dir=work))
@@ -168,29 +167,25 @@ def prairielearn():
 # ---------------------------------------------------------------- GitHub Classroom
 
 def classroom():
-    def payload_checks(what, payloads):
-        runners = {name: json.loads(base64.b64decode(p)) for name, p in payloads.items()}
-        check(sorted(runners) == ["task1", "task2"], f"{what}: runners {sorted(runners)}")
-        if sorted(runners) != ["task1", "task2"]:
-            return
-        check([r["max_score"] for r in runners.values()] == [14, 7], f"{what}: max_score not the tasks' 14 and 7")
-        earned = sum(t["score"] for r in runners.values() for t in r["tests"])
-        check(earned == total, f"{what}: {earned} points reported, the grader's {total}")
-        scores = {t["name"]: t["score"] for r in runners.values() for t in r["tests"]}
-        check(scores == {"Task 1: shown passes": 3, "Task 1: shown fails": 0, "Task 1: hidden tests": 6,
-                         "Task 2: shown two": 1, "Task 2: hidden tests": 0}, f"{what}: tests {scores}")
-        check(all(not t["message"] for r in runners.values() for t in r["tests"] if "hidden" in t["name"]),
-              f"{what}: a message on the hidden tests' entry")
-
-    payloads = pathlab_results.classroom(results, [1, 2])
-    leaks("classroom payloads", json.dumps(payloads) + decoded(payloads))
-    payload_checks("classroom", payloads)
-    run = subprocess.run([sys.executable, "-B", str(root / "tools/classroom/report"), str(scratch / "results.json"),
-                          "--tasks", "1,2"], capture_output=True, text=True, timeout=60)
-    check(run.returncode == 0, f"tools/classroom/report: exit {run.returncode}: {run.stderr[-800:]}")
-    printed = dict(line.split("=", 1) for line in run.stdout.splitlines() if "=" in line)
-    leaks("tools/classroom/report", run.stdout + run.stderr + decoded(printed))
-    payload_checks("tools/classroom/report", printed)
+    report = pathlab_results.classroom(results, [1, 2])
+    leaks("classroom report", json.dumps(report))
+    check([t["max_score"] for t in report["tasks"]] == [14, 7], "classroom: max_score not the tasks' 14 and 7")
+    check(report["score"] == total, f"classroom: {report['score']} points reported, the grader's {total}")
+    scores = {t["name"]: t["score"] for task in report["tasks"] for t in task["tests"]}
+    check(scores == {"Task 1: shown passes": 3, "Task 1: shown fails": 0, "Task 1: hidden tests": 6,
+                     "Task 2: shown two": 1, "Task 2: hidden tests": 0}, f"classroom: tests {scores}")
+    check(all(not t["output"] for task in report["tasks"] for t in task["tests"] if "hidden" in t["name"]),
+          "classroom: output on the hidden tests' entry")
+    with FakeGitHub() as github:
+        run = subprocess.run([sys.executable, "-B", str(root / "tools/classroom/report"), str(scratch / "results.json"),
+                              "--tasks", "1,2", "--notify"], capture_output=True, text=True, timeout=60,
+                             env=dict(os.environ, **github.env()))
+        posted = github.points()
+        sent = json.dumps(github.updates)
+    check(run.returncode == 1, f"tools/classroom/report (not full marks): exit {run.returncode}: {run.stderr[-800:]}")
+    leaks("tools/classroom/report", run.stdout + run.stderr + sent)
+    check(f"Total points: {total:g}/21\n" in run.stdout and posted == [f"Points {total:g}/21"],
+          f"tools/classroom/report: posted {posted}, printed\n{run.stdout}")
 
 
 def student_check():

@@ -149,8 +149,25 @@ def grade():
            f"tools/adversary --tasks {N}: {adversary.stdout[-1500:]}")
 
 
+def zip_holds_the_task(archive, when):
+    with zipfile.ZipFile(archive) as z:
+        names = set(z.namelist())
+        tasks_line = z.read("gradescope-tasks").decode().strip()
+    for rel in (f"source/tasks/{FOLDER}/{STEM}.cpp", f"source/solutions/{FOLDER}/{STEM}.cpp",
+                f"source/tests/{FOLDER}/test_{STEM}.cpp", f"source/framework/tasks/{STEM}.h"):
+        expect(rel in names, f"the Gradescope zip made {when} has no {rel}")
+    expect(tasks_line == str(N), f"the Gradescope zip made {when} grades tasks {tasks_line!r}, not {N}")
+
+
 def release_and_zip(git):
-    """4. The student release and the Gradescope zip (of the committed tree, as make-zip.sh packs HEAD)."""
+    """4. The student release and the Gradescope zip: of the working tree, before the task is
+    committed (every packager's rule, tools/package-tree) and after."""
+    archive = work / "autograder-uncommitted.zip"
+    made = run(["bash", copy / "tools/gradescope/make-zip.sh", archive, "--tasks", str(N)],
+               what=f"make-zip.sh --tasks {N}, task {N} not committed")
+    expect("uncommitted change" in made.stderr, f"make-zip.sh did not say the tree is uncommitted: {made.stderr}")
+    if archive.exists():
+        zip_holds_the_task(archive, "before the commit")
     run(git + ["add", "-A"], what="git add")
     run(git + ["commit", "-q", "-m", f"task {N}"], what="git commit")
     release = work / "release"
@@ -181,18 +198,12 @@ def release_and_zip(git):
            f"the PrairieLearn question of task {N} is missing or uploads another file")
     workflow = run([sys.executable, copy / "tools/classroom/make-workflow", "--tasks", str(N)],
                    what=f"classroom/make-workflow --tasks {N}").stdout
-    expect(f"runners: task{N}\n" in workflow and f"TASK{N}_RESULTS" in workflow,
-           f"the GitHub Classroom workflow has no runner for task {N}")
+    expect(f"tools/check --tasks {N} " in workflow and f"tools/classroom/report pathlab-results.json --tasks {N} "
+           "--notify" in workflow, f"the GitHub Classroom workflow does not grade and report task {N}")
     archive = work / "autograder.zip"
     run(["bash", copy / "tools/gradescope/make-zip.sh", archive, "--tasks", str(N)], what=f"make-zip.sh --tasks {N}")
     if archive.exists():
-        with zipfile.ZipFile(archive) as z:
-            names = set(z.namelist())
-            tasks_line = z.read("gradescope-tasks").decode().strip()
-        for rel in (f"source/tasks/{FOLDER}/{STEM}.cpp", f"source/solutions/{FOLDER}/{STEM}.cpp",
-                    f"source/tests/{FOLDER}/test_{STEM}.cpp", f"source/framework/tasks/{STEM}.h"):
-            expect(rel in names, f"the Gradescope zip has no {rel}")
-        expect(tasks_line == str(N), f"the Gradescope zip grades tasks {tasks_line!r}, not {N}")
+        zip_holds_the_task(archive, "after the commit")
 
 
 def gui_lab_and_views():

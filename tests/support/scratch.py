@@ -5,18 +5,16 @@ folder kept to look at when one failed (or with --keep), removed when all
 passed."""
 import shutil
 import subprocess
+import sys
 import time
 from pathlib import Path
 
 
 def copy_worktree(root: Path, into: Path) -> None:
-    """The files of the working tree (tracked and untracked, .gitignore respected), as they are now."""
-    listed = subprocess.run(["git", "-C", str(root), "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
-                            capture_output=True, check=True).stdout.decode().split("\0")
-    for rel in filter(None, listed):
-        if (root / rel).is_file():
-            (into / rel).parent.mkdir(parents=True, exist_ok=True)
-            shutil.copy2(root / rel, into / rel)
+    """The working tree as every packager packages it (tools/package-tree: tracked and new files,
+    .gitignore respected, as they are now)."""
+    subprocess.run([sys.executable, str(root / "tools/package-tree"), str(into)], check=True,
+                   stderr=subprocess.DEVNULL)
 
 
 def finish(name: str, failures: list, scratch: Path, keep: bool, started: float, passed: str) -> int:

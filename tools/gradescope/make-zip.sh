@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Packs the Gradescope autograder: setup.sh and run_autograder at the zip's
-# root, the repository (tracked files, without build folders) in source/.
+# root, the repository's working tree (tools/package-tree: tracked and new
+# files, uncommitted edits included, nothing .gitignore ignores) in source/.
 #   tools/gradescope/make-zip.sh OUT.zip [--timeout SECONDS] [--tasks 1,2,...]
 # --timeout: the autograder timeout set on Gradescope (default 600, its own
 # default). Gradescope does not tell the container, so the zip carries it
@@ -10,7 +11,11 @@
 # add extension tasks, e.g. 1,2,3,4,5,6,7,8), carried as gradescope-tasks.
 set -euo pipefail
 usage="usage: make-zip.sh OUT.zip [--timeout SECONDS] [--tasks 1,2,...]"
-out=$(realpath "${1:?$usage}"); shift
+case ${1:-} in
+  -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+  ''|-*) echo "$usage" >&2; exit 2 ;;
+esac
+out=$(realpath "$1"); shift
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 timeout=600 tasks=$(python3 "$root/tools/pathlab_tasks.py" core)
@@ -22,14 +27,11 @@ while (($#)); do
   esac
 done
 [[ $timeout =~ ^[0-9]+$ ]] && ((timeout >= 180)) || { echo "make-zip.sh: --timeout must be at least 180 seconds, got $timeout" >&2; exit 2; }
-for t in ${tasks//,/ }; do
-  [[ $t =~ ^[0-9]+$ && -n $(compgen -G "$root/tasks/$(printf %02d "$t")-*") ]] ||
-    { echo "make-zip.sh: --tasks names task $t, which tasks/ does not have" >&2; exit 2; }
-done
 stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
-mkdir -p "$stage/source"
-git -C "$root" archive HEAD | tar -x -C "$stage/source"
+# The working tree as it is, uncommitted edits and new tasks included (tools/package-tree: every
+# packager's one rule); it refuses a task whose folders are not all there.
+python3 "$root/tools/package-tree" "$stage/source" --tasks "$tasks" || exit 2
 cp "$here/setup.sh" "$here/run_autograder" "$stage/"
 echo "$timeout" > "$stage/gradescope-timeout"
 echo "$tasks" > "$stage/gradescope-tasks"
