@@ -82,6 +82,7 @@ for (const slider of document.querySelectorAll('.compare-slider')) {
 
 e = html.escape
 TOOL = "tools/writeup"
+NO_IMAGE_TESTS = "the suite has no image tests"  # a task's note when there is nothing to compare: not missing
 
 
 def title_of(folder: str) -> str:
@@ -230,6 +231,9 @@ def section_html(s) -> str:
                          f'{e(s["comparison_note"])}.</p>' + Z_LEGEND)
             parts.append('<div class="comparisons">' + "".join(comparison_html(c, folder) for c in s["comparisons"])
                          + "</div>")
+        elif s["comparison_note"] == NO_IMAGE_TESTS:
+            parts.append(f'<p class="meta">This task\'s suite (tests/{e(folder)}) has no image tests: its tests '
+                         f'judge values, not renders.</p>')
         else:
             parts.append(f'<div class="notice missing"><strong>No comparison:</strong> '
                          f'{e(s["comparison_note"] or "not run")}</div>')

@@ -243,6 +243,10 @@ def writeup():
                     for line in (copy / f"writeup/{FOLDER}.md").read_text().splitlines() if line.startswith(">"))
     expect(f"Task {N}" in page and "<img" in page and question[:40] in page,
            f"the write-up's page has no task {N} section with its figure and question ({pages})")
+    # The template has no image test: that is said, not flagged as a comparison missing (which
+    # make-student-release's check of a finished release would count as a failure).
+    expect("has no image tests" in page and "No comparison" not in page,
+           f"the write-up's page flags task {N}'s suite, which has no image tests, as missing a comparison")
 
 
 def declared_checks():
