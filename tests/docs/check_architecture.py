@@ -15,6 +15,7 @@ header), so a rename or a move fails here until the walk follows it.
 
 usage: check_architecture.py REPOSITORY"""
 import re
+import subprocess
 import sys
 from pathlib import Path
 
@@ -60,9 +61,16 @@ def check_tree(root: Path, text: str, problems: list):
     def present(rel: str) -> bool:
         return rel in listed or re.sub(r"(^|/)[0-9][0-9]-[^/]+", r"\1NN-name", rel) in numbered
 
+    def ignored(paths) -> set:
+        """The folders git ignores (a tool's output, e.g. try-platform/): not the repository's."""
+        asked = subprocess.run(["git", "-C", str(root), "check-ignore", "--stdin"], input="\n".join(map(str, paths)),
+                               capture_output=True, text=True)
+        return {Path(line) for line in asked.stdout.splitlines()}
+
     def folders(base: Path):
-        return sorted(p for p in base.iterdir() if p.is_dir() and not p.name.startswith(("build", "__pycache__"))
-                      and (not p.name.startswith(".") or p.name == ".ci") and any(p.rglob("*.*")))
+        found = [p for p in base.iterdir() if p.is_dir() and not p.name.startswith(("build", "__pycache__"))
+                 and (not p.name.startswith(".") or p.name == ".ci") and any(p.rglob("*.*"))]
+        return sorted(set(found) - ignored(found))
 
     for folder in folders(root):
         if not present(folder.name):

@@ -40,6 +40,7 @@ REAL = Path("/autograder")
 SETUP_TIMEOUT, GRADE_TIMEOUT = 1200, 900
 sys.path.insert(0, str(root / "tools"))
 import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
+from pathlab_platforms import unpack  # noqa: E402  (like unzip, as Gradescope unpacks the zip)
 sys.path.insert(0, str(root / "tests/support"))
 from scratch import finish  # noqa: E402
 ALL_TASKS = sorted(pathlab_tasks.tasks(root))
@@ -70,16 +71,6 @@ def snapshot(path: Path):
             except OSError:
                 pass
     return found
-
-
-def unpack(archive: Path, into: Path) -> None:
-    """Like unzip: the files and their permission bits (zipfile.extractall drops them)."""
-    with zipfile.ZipFile(archive) as z:
-        for info in z.infolist():
-            target = Path(z.extract(info, into))
-            mode = (info.external_attr >> 16) & 0o7777
-            if mode and not info.is_dir():
-                os.chmod(target, mode)
 
 
 def environment() -> dict:

@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 """Autolab and PrairieLearn grade PathLab as each runs it, here, with the
 same points as tools/grade (docs/ta-autolab.md, docs/ta-prairielearn.md).
+Each job is run by tools/pathlab_platforms.py, as tools/try-platform runs a
+TA's handin; this test checks what the jobs give.
 
 No Docker engine runs here, so the images are made as their Dockerfiles make
 them, in a scratch folder standing in for the image's root (IMAGE): the
-tracked tree copied to IMAGE/opt/pathlab, then tools/autolab/image-setup
+working tree packaged in IMAGE/opt/pathlab, then tools/autolab/image-setup
 (tools/install-grader's build, pathlab-autolab-grade installed setuid root
 in IMAGE/usr/local/bin; PATHLAB_SKIP_APT=1: the packages must be here).
 
@@ -45,15 +47,10 @@ import base64
 import json
 import os
 import shutil
-import subprocess
 import sys
-import tarfile
 import tempfile
 import time
-import zipfile
 from pathlib import Path
-
-import yaml  # Debian's python3-yaml (tools/packages.sh, pathlab_test)
 
 root = Path(sys.argv[1]).resolve()
 keep = "--keep" in sys.argv[3:]
@@ -61,51 +58,22 @@ keep = "--keep" in sys.argv[3:]
 # other grading tests make the repository private (mode 0700) while they grade.
 work = Path(tempfile.mkdtemp(prefix="pathlab-platforms-"))
 work.chmod(0o755)
-image = work / "image"          # the image's root
-tree = image / "opt/pathlab"    # the tree, where both Dockerfiles put it
-helper = image / "usr/local/bin/pathlab-autolab-grade"
 sys.path.insert(0, str(root / "tools"))
+import pathlab_platforms as platforms  # noqa: E402  (each platform's run, as tools/try-platform runs it)
 import pathlab_results  # noqa: E402
 import pathlab_tasks  # noqa: E402
 from pathlab_grading import judge_manifest  # noqa: E402
 sys.path.insert(0, str(root / "tests/support"))
-from scratch import copy_worktree, finish  # noqa: E402
+from scratch import finish  # noqa: E402
 
 TASKS = pathlab_tasks.tasks(root)
-GRADING_UID = int(os.environ.get("PATHLAB_PLATFORMS_UID", "64995"))  # Tango's "autograde"
-TANGO_NPROC, TANGO_FSIZE, TANGO_OUTPUT = 100, 100 << 20, 1000 * 1024  # Tango's defaults
-PL_RESULTS_BYTES = 1 << 20
+GRADING_UID = platforms.TANGO_UID  # PATHLAB_PLATFORMS_UID
 failures = []
+image = None  # the image's root (platforms.Image), made by main
 
 
 def fail(message):
     failures.append(message)
-
-
-def run(argv, what, timeout=1200, **kw):
-    t = time.time()
-    p = subprocess.run([str(a) for a in argv], capture_output=True, text=True, timeout=timeout, **kw)
-    print(f"  {what}: exit {p.returncode}, {time.time() - t:.0f} s", flush=True)
-    return p
-
-
-# ---------------------------------------------------------------- the image
-
-def make_image():
-    copy_worktree(root, tree)
-    env = dict(os.environ, PATHLAB_SKIP_APT="1", PATHLAB_IMAGE_PREFIX=str(image))
-    if "CCACHE_BASEDIR" in env:  # the compiler cache's paths relative to the image's tree, as to the repository's
-        env["CCACHE_BASEDIR"] = str(tree)
-    made = run(["bash", tree / "tools/autolab/image-setup"], "image: tools/autolab/image-setup", env=env)
-    if made.returncode != 0:
-        raise SystemExit(f"FAIL: the image's set-up failed:\n{made.stdout[-3000:]}{made.stderr[-3000:]}")
-    mode = helper.stat()
-    if not (mode.st_mode & 0o4000 and mode.st_uid == 0):
-        raise SystemExit(f"FAIL: {helper} is not setuid root")
-    # The image's folders are readable by Tango's grading user (a Dockerfile's COPY makes them so).
-    for folder in [image, *image.parents][:-1]:
-        if folder.stat().st_mode & 0o005 != 0o005:
-            raise SystemExit(f"FAIL: {folder} is not readable by others: the grading uid cannot reach the image")
 
 
 def task_files(kinds: dict) -> list:
@@ -126,8 +94,9 @@ def direct_grade(files, tasks, name) -> dict:
     for file, source in files:
         shutil.copy(source, folder / file)
     out = work / "direct" / f"{name}.json"
-    graded = run([sys.executable, tree / "tools/grade", folder, "--tasks", ",".join(map(str, tasks)), "--out", out,
-                  "--build-dir", tree / "build-grade", "--sandbox", "uid"], f"tools/grade {name}")
+    graded = platforms.run([sys.executable, image.tree / "tools/grade", folder, "--tasks", ",".join(map(str, tasks)),
+                            "--out", out, "--build-dir", image.tree / "build-grade", "--sandbox", "uid"],
+                           f"tools/grade {name}")
     if not out.exists():
         raise SystemExit(f"FAIL: tools/grade wrote nothing for {name}:\n{graded.stderr[-2000:]}")
     return pathlab_results.load(out)
@@ -135,73 +104,30 @@ def direct_grade(files, tasks, name) -> dict:
 
 # ---------------------------------------------------------------- Autolab
 
-def tango_cut(output: bytes) -> bytes:
-    """What autodriver keeps of a job's output: all of it, or its first and last halves of the limit."""
-    if len(output) <= TANGO_OUTPUT:
-        return output
-    half = TANGO_OUTPUT // 2
-    return output[:half] + b"\n...[excess bytes elided]...\n" + output[-half:]
-
-
-def assessment(out: Path, tasks, per: str):
-    made = run([sys.executable, tree / "tools/autolab/make-autograder", out, "--tasks", ",".join(map(str, tasks)),
-                "--per", per, "--build-dir", tree / "build-grade"], f"make-autograder --tasks {tasks} --per {per}")
-    if made.returncode != 0:
-        raise SystemExit(f"FAIL: make-autograder:\n{made.stderr[-2000:]}")
-    name = "pathlab-tasks-" + "-".join(map(str, tasks))
-    with tarfile.open(out / f"{name}.tar") as tar:  # the tarball a TA imports into Autolab
-        tar.extractall(out / "imported")
-    folder = out / "imported" / name
-    yml = yaml.safe_load((folder / f"{name}.yml").read_text())  # Autolab reads it with a YAML parser too
-    problems = [(p["name"], float(p["max_score"])) for p in yml["problems"]]
-    colspec = json.loads(yml["scoreboard"]["colspec"])
-    if not (yml["general"]["name"] == name and isinstance(yml["autograder"]["autograde_timeout"], int) and
+def assessment(out: Path, tasks, per: str) -> platforms.Assessment:
+    made = platforms.autolab_assessment(image, out, tasks, per)
+    yml = made.yml
+    if not (yml["general"]["name"] == made.name and isinstance(made.timeout, int) and
             yml["autograder"]["autograde_image"] == "pathlab-autolab" and all(
                 set(p) == {"name", "description", "max_score", "optional"} for p in yml["problems"])):
-        fail(f"autolab: {name}.yml is not an assessment Autolab imports: {yml}")
-    return folder, problems, yml["general"]["handin_filename"], yml["autograder"]["autograde_timeout"], \
-        colspec["scoreboard"]
+        fail(f"autolab: {made.name}.yml is not an assessment Autolab imports: {yml}")
+    return made
 
 
-def tango_job(folder, handin_name, timeout, files, kind):
+def tango_job(made: platforms.Assessment, files, kind):
     """One job as Tango runs it; (the autoresult, the feedback)."""
-    job = work / "autolab" / f"job-{kind}"
-    shutil.rmtree(job, ignore_errors=True)
-    job.mkdir(parents=True)
-    shutil.copy(folder / "autograde-Makefile", job / "Makefile")
-    shutil.copy(folder / "autograde.tar", job / "autograde.tar")
-    if files is not None:
-        if handin_name.endswith(".zip"):
-            with zipfile.ZipFile(job / handin_name, "w") as z:
-                for name, source in files:
-                    z.write(source, name)
-        else:
-            shutil.copy(files[0][1], job / handin_name)
-    for path in [job, *job.rglob("*")]:
-        os.chown(path, GRADING_UID, GRADING_UID)
-    env = {"PATH": "/usr/bin:/bin", "LANG": "C.UTF-8", "PATHLAB_AUTOLAB_GRADE": str(helper),
-           "PATHLAB_SANDBOX": "uid",  # Docker's seccomp denies bubblewrap's namespaces: the grader's uid mode
-           "PATHLAB_SANDBOX_UID": os.environ.get("PATHLAB_SANDBOX_UID", "")}  # its own beside other graders
-    t = time.time()
-    try:
-        p = subprocess.run(["unshare", "--net", "setpriv", f"--reuid={GRADING_UID}", f"--regid={GRADING_UID}",
-                            "--clear-groups", "prlimit", f"--nproc={TANGO_NPROC}", f"--fsize={TANGO_FSIZE}", "--",
-                            "make"], cwd=job, env=env, capture_output=True, timeout=timeout)
-        output, code = tango_cut(p.stdout + p.stderr), p.returncode
-    except subprocess.TimeoutExpired:
-        fail(f"autolab {kind}: the job passed the assessment's timeout of {timeout} s")
+    job = platforms.autolab_job(image, made, files, work / "autolab" / f"job-{kind}", GRADING_UID)
+    if job.timed_out:
+        fail(f"autolab {kind}: the job passed the assessment's timeout of {made.timeout} s")
         return None, ""
-    text = output.decode(errors="replace")
-    (work / "autolab" / f"{kind}.feedback.txt").write_text(text)  # what the student reads, for a person to look at
-    if "WARNING" in text:  # e.g. the assessment's problems are not the image's judges' tests
-        fail(f"autolab {kind}: the job warned:\n{text[:1000]}")
-    print(f"  autolab {kind}: make exit {code}, {time.time() - t:.0f} s, {len(output)} bytes of feedback", flush=True)
-    last = text.rstrip("\n").rsplit("\n", 1)[-1]
-    try:
-        return json.loads(last), text
-    except ValueError:
-        fail(f"autolab {kind}: the last line is not the autoresult: {last[:300]!r}\n{text[-1500:]}")
-        return None, text
+    if "WARNING" in job.feedback:  # e.g. the assessment's problems are not the image's judges' tests
+        fail(f"autolab {kind}: the job warned:\n{job.feedback[:1000]}")
+    print(f"  autolab {kind}: {job.seconds:.0f} s, {len(job.feedback.encode())} bytes of feedback "
+          f"({job.feedback_file})", flush=True)
+    if job.autoresult is None:
+        last = job.feedback.rstrip("\n").rsplit("\n", 1)[-1]
+        fail(f"autolab {kind}: the last line is not the autoresult: {last[:300]!r}\n{job.feedback[-1500:]}")
+    return job.autoresult, job.feedback
 
 
 def autoresult_problems(result, problems, columns, kind) -> bool:
@@ -224,16 +150,17 @@ def autoresult_problems(result, problems, columns, kind) -> bool:
 
 def check_autolab(pair, single):
     out = work / "autolab"
-    folder, problems, handin, timeout, columns = assessment(out, pair, "task")
-    if handin != "handin.zip" or [p for p, _ in problems] != [f"Task {n}" for n in pair]:
-        fail(f"autolab: handin {handin}, problems {problems}: not a zip and one problem per task")
+    made = assessment(out, pair, "task")
+    problems, columns = made.problems, made.columns
+    if made.handin != "handin.zip" or [p for p, _ in problems] != [f"Task {n}" for n in pair]:
+        fail(f"autolab: handin {made.handin}, problems {problems}: not a zip and one problem per task")
     maxima = dict(problems)
     mutant_task = next(n for n in pair if n != 3)
     mutant = sorted((root / "tests/mutants" / TASKS[mutant_task][0]).glob("*.cpp"))[0]
     cases = {"stubs": {n: "stub" for n in pair}, "reference": {n: "reference" for n in pair},
              "half-done": {3: "reference", mutant_task: mutant}}
     for kind, kinds in cases.items():
-        result, feedback = tango_job(folder, handin, timeout, task_files(kinds), kind)
+        result, feedback = tango_job(made, task_files(kinds), kind)
         if result is None or not autoresult_problems(result, problems, columns, kind):
             continue
         scores = result["scores"]
@@ -255,18 +182,20 @@ def check_autolab(pair, single):
         for n in pair:
             if f"Task {n}: {scores[f'Task {n}']:g} of {maxima[f'Task {n}']:g} points" not in feedback:
                 fail(f"autolab {kind}: the feedback does not say task {n}'s points:\n{feedback[:1500]}")
-    result, feedback = tango_job(folder, handin, timeout, None, "missing-handin")
+    result, feedback = tango_job(made, None, "missing-handin")
     if result is not None and autoresult_problems(result, problems, columns, "missing-handin") and \
             (any(result["scores"].values()) or "handin.zip" not in feedback):
         fail(f"autolab missing handin: {result}, not 0 everywhere with the reason:\n{feedback[-800:]}")
 
     # A problem per test, one task's file as the handin.
-    folder, problems, handin, timeout, columns = assessment(out / "per-test", [single], "test")
-    if handin != TASKS[single][1] or len(problems) < 2 or not all(p.startswith(f"Task {single}: ") for p, _ in problems):
-        fail(f"autolab per test: handin {handin}, problems {problems[:2]}")
+    made = assessment(out / "per-test", [single], "test")
+    problems, columns = made.problems, made.columns
+    if made.handin != TASKS[single][1] or len(problems) < 2 or \
+            not all(p.startswith(f"Task {single}: ") for p, _ in problems):
+        fail(f"autolab per test: handin {made.handin}, problems {problems[:2]}")
     mutant = sorted((root / "tests/mutants" / TASKS[single][0]).glob("*.cpp"))[-1]
     for kind, kinds in (("per-test-reference", {single: "reference"}), ("per-test-mutant", {single: mutant})):
-        result, _ = tango_job(folder, handin, timeout, task_files(kinds), kind)
+        result, _ = tango_job(made, task_files(kinds), kind)
         if result is None or not autoresult_problems(result, problems, columns, kind):
             continue
         want = dict(problems) if kind.endswith("reference") else \
@@ -310,47 +239,24 @@ def schema_problems(report: dict) -> list:
 
 
 def pl_job(question: Path, files, kind):
-    info = json.loads((question / "info.json").read_text())["externalGradingOptions"]
-    grade = work / "prairielearn" / f"grade-{kind}"
-    shutil.rmtree(grade, ignore_errors=True)
-    for sub in ("student", "serverFilesCourse", "data", "results"):
-        (grade / sub).mkdir(parents=True)
-    shutil.copytree(question / "tests", grade / "tests")
-    for name, source in files:
-        shutil.copy(source, grade / "student" / name)
-    (grade / "data/data.json").write_text(json.dumps({"params": {}, "correct_answers": {}, "submitted_answers": {
-        "_files": [{"name": n} for n, _ in files]}, "gradable": True}))
-    entrypoint = image / info["entrypoint"].lstrip("/")
-    env = {"PATH": "/usr/bin:/bin", "LANG": "C.UTF-8", "PL_GRADE_ROOT": str(grade), "PATHLAB_SANDBOX": "uid",
-           "PATHLAB_SANDBOX_UID": os.environ.get("PATHLAB_SANDBOX_UID", "64990")}  # its own beside other graders
-    t = time.time()
-    try:
-        subprocess.run(["unshare", "--net", str(entrypoint)], env=env, capture_output=True,
-                       timeout=info["timeout"])
-    except subprocess.TimeoutExpired:
-        fail(f"prairielearn {kind}: the job passed the question's timeout of {info['timeout']} s")
+    job = platforms.prairielearn_job(image, question, files, work / "prairielearn" / f"grade-{kind}")
+    if job.timed_out:
+        fail(f"prairielearn {kind}: the job passed the question's timeout")
         return None
-    out = grade / "results/results.json"
-    size = out.stat().st_size if out.exists() else 0
-    print(f"  prairielearn {kind}: {time.time() - t:.0f} s, results.json {size} bytes", flush=True)
-    if not out.exists() or size > PL_RESULTS_BYTES:
-        fail(f"prairielearn {kind}: results.json missing or over 1 MB ({size} bytes)")
+    print(f"  prairielearn {kind}: {job.seconds:.0f} s, results.json {job.size} bytes", flush=True)
+    if job.results is None:
+        fail(f"prairielearn {kind}: results.json missing, not JSON or over 1 MB ({job.size} bytes)")
         return None
-    report = json.loads(out.read_text())
-    problems = schema_problems(report)
+    problems = schema_problems(job.results)
     for p in problems[:5]:
         fail(f"prairielearn {kind}: {p}")
-    return None if problems else report
+    return None if problems else job.results
 
 
 def check_prairielearn(tasks):
-    out = work / "prairielearn"
-    made = run([sys.executable, tree / "tools/prairielearn/make-course", out, "--tasks", ",".join(map(str, tasks))],
-               f"make-course --tasks {tasks}")
-    if made.returncode != 0:
-        raise SystemExit(f"FAIL: make-course:\n{made.stderr[-2000:]}")
+    questions = platforms.prairielearn_course(image, work / "prairielearn", tasks)
     for n in tasks:
-        question = out / "questions/pathlab" / TASKS[n][0]
+        question = questions[n]
         info = json.loads((question / "info.json").read_text())
         options = info.get("externalGradingOptions", {})
         if not (info.get("gradingMethod") == "External" and options.get("enabled") and
@@ -380,7 +286,7 @@ def check_prairielearn(tasks):
                 fail(f"prairielearn task {n} stub: score {report['score']}, or no failure picture inlined")
             if kind == "reference" and report["score"] != 1:
                 fail(f"prairielearn task {n} reference: score {report['score']}")
-            listed = {f"Task {n}: {name}": points for name, points, _ in judge_manifest(tree / "build-grade", n)}
+            listed = {f"Task {n}: {name}": points for name, points, _ in judge_manifest(image.tree / "build-grade", n)}
             if {name: m for name, (_, m) in points.items()} != listed:
                 fail(f"prairielearn task {n} {kind}: its tests are not the judge's, or not worth what it lists")
             if kind in ("stub", "mutant"):  # the stub's results are cut below; a mutant's points are partial
@@ -405,8 +311,12 @@ def check_prairielearn(tasks):
 
 def main() -> int:
     start = time.time()
+    global image
     print(f"scratch: {work}")
-    make_image()
+    try:
+        image = platforms.make_image(root, work / "image")
+    except platforms.PlatformError as error:
+        raise SystemExit(f"FAIL: {error}")
     others = [n for n in TASKS if n != 3]
     if os.environ.get("PATHLAB_PLATFORM_TASKS"):
         drawn = pathlab_tasks.parse_task_list(os.environ["PATHLAB_PLATFORM_TASKS"], others, "PATHLAB_PLATFORM_TASKS")

@@ -3,6 +3,8 @@
 copy of the repository (docs/own-task.md): nothing but the new task's
 folders is edited, and then
 
+  0. a second graded call is added as docs/own-task.md says (T13.2, a call
+     of three arguments asked in a batch, worth 3 of the task's 7 points);
   1. `git status` lists only the task's folders (tasks/, solutions/, tests/
      with its generated mutants/ and alternates/, writeup/), its API header
      framework/tasks/NAME.h, and one generated row of README.md's task table;
@@ -20,6 +22,9 @@ folders is edited, and then
      `make-zip.sh --tasks 13` packs its folders for Gradescope, and the
      other platforms' adapters take it (an Autolab assessment with its
      problem and handin, a PrairieLearn question, a Classroom runner);
+     and every platform grades it as it runs a job (tools/try-platform all):
+     the stub 0, the reference every point, a wrong handin (T13.1 wrong,
+     T13.2 right: 3 of 7) the same points on each, which are tools/check's;
   5. the GUI shows its panel button, whole, labelled from its task.json, and
      draws its panel (a screenshot, kept in WORK_DIR/new-task/); the lab
      lists its warp and accepts the reference's; `pathlab debug --task 13`
@@ -79,6 +84,58 @@ def copy_repository():
     return git
 
 
+# A second graded call, as docs/own-task.md says to add one (a call of several arguments, asked in a batch):
+# (file, the piece of the template it follows, what is added after it).
+SECOND_CALL = [
+    (f"framework/tasks/{STEM}.h", "Point2 sampleTriangle(Vec2 u);\n",
+     "\n// T13.2: the area of the triangle a, b, c, whichever way round it winds.\n"
+     "float triangleArea(Point2 a, Point2 b, Point2 c);\n"),
+    (f"tasks/{FOLDER}/{STEM}.cpp", "  return Point2(0.0f);\n}\n",
+     "\n// T13.2 — The area of the triangle a, b, c: half the length of the cross\n"
+     "// product of two edges, |(b - a) x (c - a)| / 2, whichever way it winds.\n"
+     "float triangleArea(Point2 a, Point2 b, Point2 c) {\n"
+     "  // TODO(T13.2): the triangle's area.\n  PATHLAB_TODO(\"T13.2\");\n"
+     "  (void)a;\n  (void)b;\n  (void)c;\n  return 0.0f;\n}\n"),
+    (f"solutions/{FOLDER}/{STEM}.cpp", "  return Point2(1.0f - s, s * u.y);\n}\n",
+     "\nfloat triangleArea(Point2 a, Point2 b, Point2 c) {\n"
+     "  const Vec2 e1 = b - a, e2 = c - a;\n  return 0.5f * std::abs(e1.x * e2.y - e1.y * e2.x);\n}\n"),
+    (f"tests/{FOLDER}/calls.h", "std::vector<Point2>(std::vector<Vec2>));\n",
+     "PATHLAB_REMOTE_CALL(TriangleArea, 2, shape::Fixed, float(Point2, Point2, Point2));\n"),
+    (f"tests/{FOLDER}/serve.cpp", "    return points;\n  });\n",
+     f"  server.serve<calls::TriangleArea>(&{STEM}::triangleArea);\n"),
+    (f"tests/{FOLDER}/test_{STEM}.cpp", "  CHECK(r.pValue > kChiSquareP);\n}\n",
+     "\nTEST_CASE(\"T13.2 area: random triangles of either winding, asked in one batch\" *\n"
+     "          grading(3, \"half the length of the cross product of two edges, and its absolute value: a \"\n"
+     "                     \"triangle wound clockwise has a positive area too\")) {\n"
+     "  const std::vector<Vec2> us = uniformPoints(3000, 2);\n"
+     "  std::vector<calls::TriangleArea::Args> triangles;\n  std::vector<double> areas;\n"
+     "  for (size_t i = 0; i + 2 < us.size(); i += 3) {\n"
+     "    const Point2 a = us[i] * 4.0f - 2.0f, b = us[i + 1] * 4.0f - 2.0f, c = us[i + 2] * 4.0f - 2.0f;\n"
+     "    triangles.push_back({a, b, c});\n"
+     "    areas.push_back(0.5 * std::abs(double(b.x - a.x) * double(c.y - a.y) - double(b.y - a.y) * double(c.x - a.x)));\n"
+     "  }\n"
+     "  const std::vector<float> got = remote::callMany<calls::TriangleArea>(triangles);\n"
+     "  HINT(\"a guard of the test itself: one area comes back for each triangle asked\");\n"
+     "  REQUIRE(got.size() == triangles.size());\n  int wrong = 0;\n"
+     "  for (size_t i = 0; i < got.size(); ++i) wrong += !(std::abs(double(got[i]) - areas[i]) <= 1e-4 * (1.0 + areas[i]));\n"
+     "  INFO(wrong << \" of \" << got.size() << \" areas wrong\");\n"
+     "  HINT(\"each area must be |(b - a) x (c - a)| / 2, of either winding\");\n  CHECK(wrong == 0);\n}\n"),
+]
+
+
+def second_graded_call():
+    """A second graded call added to the new task as a course adds one (docs/own-task.md): the header,
+    the stub's TODO, the reference, the call, its server and its test; then the generated mutants
+    made again from the reference (tests/mutants/generate.py)."""
+    for rel, after, added in SECOND_CALL:
+        path = copy / rel
+        text = path.read_text()
+        if expect(text.count(after) == 1, f"{rel}: the template no longer has {after.strip()!r} once"):
+            path.write_text(text.replace(after, after + added))
+    run([sys.executable, copy / "tests/mutants/generate.py"], what="tests/mutants/generate.py")
+    run([sys.executable, copy / "tools/hint-catalogue"], what="tools/hint-catalogue")
+
+
 def status_lists_only_the_task():
     """1. What new-task changed: the task's folders, its header and one README row."""
     own = (f"tasks/{FOLDER}/", f"solutions/{FOLDER}/", f"tests/{FOLDER}/", f"tests/mutants/{FOLDER}/",
@@ -108,6 +165,11 @@ def build_and_test():
                 what="build pathlab, pathlab-gui, the judge, its candidates and lab programs")
     warnings = [line for line in built.stdout.splitlines() if "warning:" in line and (FOLDER in line or STEM in line)]
     expect(not warnings, f"warnings in the task's files: {warnings[:3]}")
+    # The handout's test table follows the suite, T13.2 included (tools/handout-tables, as own-task.md says).
+    run([sys.executable, copy / "tools/handout-tables", build, "--tasks", str(N)],
+        what=f"tools/handout-tables --tasks {N}")
+    expect("## Tests (7 points)" in (copy / f"tasks/{FOLDER}/README.md").read_text() and "T13.2" in
+           (copy / f"tasks/{FOLDER}/README.md").read_text(), "the handout's table does not list T13.2 (7 points)")
     tests = run(["ctest", "--test-dir", build, "-R", FOLDER, "--output-on-failure"], timeout=900,
                 what=f"ctest -R {FOLDER}")
     ran = re.findall(r"Test +#\d+: (\S+) \.+\s+Passed", tests.stdout)
@@ -206,6 +268,32 @@ def release_and_zip(git):
         zip_holds_the_task(archive, "after the commit")
 
 
+def every_platform():
+    """4b. Every platform's package holds the task and grades it as that platform runs a job
+    (tools/try-platform all): the stub 0, the reference every point, a wrong handin (the template's
+    mutant, handed in as the task's file) the same points everywhere, which are tools/check's."""
+    wrong = work / "wrong-handin"
+    wrong.mkdir(exist_ok=True)
+    shutil.copy(copy / "tests/mutants" / FOLDER / "slices-uniform.cpp", wrong / f"{STEM}.cpp")
+    env = dict(os.environ, PATHLAB_SANDBOX_UID=os.environ.get("PATHLAB_SANDBOX_UID", "64993"),
+               PATHLAB_PLATFORMS_UID=os.environ.get("PATHLAB_PLATFORMS_UID", "64996"))
+    tried = run([sys.executable, copy / "tools/try-platform", "all", "--tasks", str(N), "stubs", "reference", wrong,
+                 "--out", work / "try-platform", "--build-dir", build], env=env, timeout=1500, what=f"try-platform all --tasks {N}")
+    got = {(platform, handin): (float(earned), float(possible)) for platform, handin, earned, possible in
+           re.findall(rf"^(\w+) (\S+): ([\d.]+) of ([\d.]+) points \(task {N} ", tried.stdout, re.M)}
+    platforms = ("gradescope", "autolab", "prairielearn", "classroom")
+    expect(set(got) == {(p, h) for p in platforms for h in ("stubs", "reference", wrong.name)},
+           f"try-platform did not grade each handin on each platform: {sorted(got)}\n{tried.stdout[-1500:]}")
+    full = got.get(("gradescope", "reference"), (0, 0))[1]
+    points = {got.get((p, wrong.name)) for p in platforms}
+    expect(full > 0 and all(got.get((p, "reference")) == (full, full) and got.get((p, "stubs")) == (0, full)
+                            for p in platforms), f"the stub or the reference graded differently: {got}")
+    expect(len(points) == 1 and 0 < next(iter(points))[0] < full,
+           f"the wrong handin got different points on the platforms, or kept them all: {got}")
+    print(f"  every platform: stub 0, reference {full:g}/{full:g}, the wrong handin "
+          f"{got.get(('classroom', wrong.name))} (tools/check's, the classroom's)")
+
+
 def gui_lab_and_views():
     """5. The GUI's panel, the lab's warp and the debugger's view."""
     shot = work / f"gui-panel-{N}.png"
@@ -273,8 +361,8 @@ def main() -> int:
     made = run([sys.executable, copy / "tools/new-task", str(N), NAME, "--title", "Texture mapping", "--label", LABEL],
                what=f"tools/new-task {N} {NAME}")
     if made.returncode == 0:
-        for step in (status_lists_only_the_task, build_and_test, grade, lambda: release_and_zip(git),
-                     gui_lab_and_views, writeup, declared_checks):
+        for step in (second_graded_call, status_lists_only_the_task, build_and_test, grade, lambda: release_and_zip(git),
+                     every_platform, gui_lab_and_views, writeup, declared_checks):
             step()
     # (The copy alone is removed when all passed: the panel's screenshot stays, for a person to look at.)
     return finish("new-task", failures, copy, keep, started,
