@@ -64,6 +64,9 @@ struct Warp {
   std::vector<demo::Parameter> parameters;  // besides the common ones (samples, sequence, seed, grid)
   std::function<WarpSetup(const demo::Values&, const WarpFiles&)> setup;
   bool takesEnvironmentMap = false;  // reads WarpFiles::environmentMap
+  // Other tasks whose code it runs besides its own (the scene's intersection,
+  // a BSDF): its verdict means something only once they are done too.
+  std::vector<int> alsoRuns = {};
 };
 
 // Every warp, in task order, the recitation's examples first.

@@ -15,7 +15,13 @@ namespace pathlab::lab {
 int runLab(const LabArgs& args) {
   if (args.list) {
     for (const Warp& warp : allWarps()) {
-      std::printf("%-20s %-5s %s\n", warp.name.c_str(), warp.task.c_str(), warp.summary.c_str());
+      std::string also;
+      for (int n : warp.alsoRuns) {
+        also += (!also.empty() ? ", " : warp.alsoRuns.size() > 1 ? " (also runs tasks " : " (also runs task ") +
+                std::to_string(n);
+      }
+      std::printf("%-20s %-5s %s%s\n", warp.name.c_str(), warp.task.c_str(), warp.summary.c_str(),
+                  also.empty() ? "" : (also + ")").c_str());
     }
     return 0;
   }

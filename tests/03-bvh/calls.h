@@ -135,17 +135,7 @@ inline std::vector<ServedTraversal> traverseServed(const Bvh& bvh, const Scene& 
   const LeafGeometry geometry(scene, bvh.primitives, kLinkedTasks.primitives);  // the judge's (reference) tests
   std::vector<ServedTraversal> traversals(rays.size());
   const remote::AskHandler serve = [&](const std::string& question) {
-    uint32_t ray = 0, slot = 0;
-    Interval range;
-    try {
-      wire::Reader reader(question);
-      ray = reader.get<uint32_t>();
-      slot = reader.get<uint32_t>();
-      range = reader.get<Interval>();
-      reader.expectEnd();
-    } catch (const wire::WireError& e) {
-      throw remote::CandidateError(std::string("the candidate asked for a primitive test in a malformed way: ") + e.what());
-    }
+    const auto [ray, slot, range] = remote::readAsk<uint32_t, uint32_t, Interval>(question, "a primitive test");
     if (ray >= rays.size() || slot >= geometry.size()) {
       throw remote::CandidateError("the candidate asked to test slot " + std::to_string(slot) + " for ray " +
                                    std::to_string(ray) + " (the tree has " + std::to_string(geometry.size()) +

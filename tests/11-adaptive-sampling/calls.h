@@ -79,15 +79,7 @@ inline std::vector<ServedPixel> samplePixels(const std::vector<std::vector<Color
   }
   const uint32_t perAsk = std::max(1u, settings.batch);
   const remote::AskHandler serve = [&](const std::string& question) {
-    uint32_t k = 0, first = 0;
-    try {
-      wire::Reader reader(question);
-      k = reader.get<uint32_t>();
-      first = reader.get<uint32_t>();
-      reader.expectEnd();
-    } catch (const wire::WireError& e) {
-      throw remote::CandidateError(std::string("the candidate asked for samples in a malformed way: ") + e.what());
-    }
+    const auto [k, first] = remote::readAsk<uint32_t, uint32_t>(question, "samples");
     if (k >= pixels.size() || first != pixels[k].served) {
       throw remote::CandidateError("the candidate asked for samples from " + std::to_string(first) + " of pixel " +
                                    std::to_string(k) + " (of " + std::to_string(pixels.size()) + ")" +

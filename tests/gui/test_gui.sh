@@ -122,13 +122,16 @@ for ((n = 1; n <= count; ++n)); do
   [[ $panels == *": $n $label"* || $panels == *"| $n $label"* ]] || fail "no whole button \"$n $label\": $panels"
 done
 # A warp that runs a task's routine (lab --list's second column: T<n>...)
-# is ACCEPTED by default once that task is done (a student release's stubs
-# are rejected, rightly); the seed warps are the framework's own.
-while read -r warp tag _; do
+# is ACCEPTED by default once that task is done, and the tasks it also runs
+# ("(also runs tasks 2, 3)" ending its line): a student release's stubs are
+# rejected, rightly. The seed warps are the framework's own.
+while read -r warp tag rest; do
   grep -qx "$warp" <<< "$warps" || continue
   n=${tag#T} n=${n%%.*}
-  if [[ $tag == T* ]] && ! done_in "$gui" "$n"; then
-    echo "skipped: the lab's $warp runs task $n, undone in $(basename "$gui")"
+  also=()
+  [[ $rest =~ \(also\ runs\ tasks?\ ([0-9, ]+)\)$ ]] && read -ra also <<< "${BASH_REMATCH[1]//,/ }"
+  if [[ $tag == T* ]] && ! done_in "$gui" "$n" ${also[@]+"${also[@]}"}; then
+    echo "skipped: the lab's $warp runs task${also[*]:+s} $n${also[*]:+ ${also[*]}}, not all done in $(basename "$gui")"
     continue
   fi
   grep -q "script: lab-verdict -> $warp: ACCEPTED" "$out/session.log" ||

@@ -65,6 +65,21 @@ inline constexpr uint64_t kMaxAnswerBytes = uint64_t(96) << 20;
 // ask it refuses (the call then fails with that message).
 using AskHandler = std::function<std::string(const std::string& ask)>;
 
+// An ask's payload decoded as Fields..., in order, and nothing after them;
+// one that does not decode is the candidate's fault: a CandidateError saying
+// "the candidate asked for <what> in a malformed way".
+template <typename... Fields>
+std::tuple<Fields...> readAsk(const std::string& ask, const char* what) {
+  try {
+    wire::Reader reader(ask);
+    std::tuple<Fields...> fields{reader.get<Fields>()...};  // a braced list reads its items in order
+    reader.expectEnd();
+    return fields;
+  } catch (const wire::WireError& e) {
+    throw CandidateError(std::string("the candidate asked for ") + what + " in a malformed way: " + e.what());
+  }
+}
+
 // Judge side (judge.cpp): sends one request and returns the answer's
 // payload, starting the candidate process on first use (and again after it
 // crashed); answers the candidate's asks with `asks` meanwhile (without one,

@@ -83,19 +83,7 @@ inline std::vector<ServedShadows> shadowRays(const TraceContext& context, const 
   const size_t most = calls::mostShadowRays(context.scene, settings);
   std::vector<ServedShadows> served(queries.size());
   const remote::AskHandler serve = [&](const std::string& question) {
-    uint32_t query = 0;
-    Ray ray;
-    Interval range;
-    try {
-      wire::Reader reader(question);
-      query = reader.get<uint32_t>();
-      ray = reader.get<Ray>();
-      range = reader.get<Interval>();
-      reader.expectEnd();
-    } catch (const wire::WireError& e) {
-      throw remote::CandidateError(std::string("the candidate asked for an occlusion query in a malformed way: ") +
-                                   e.what());
-    }
+    const auto [query, ray, range] = remote::readAsk<uint32_t, Ray, Interval>(question, "an occlusion query");
     if (query >= queries.size()) {
       throw remote::CandidateError("the candidate asked for an occlusion query of estimate " + std::to_string(query) +
                                    " (the request has " + std::to_string(queries.size()) + ")");
