@@ -49,30 +49,15 @@ from pathlib import Path
 root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
 keep = "--keep" in sys.argv[3:]
 sys.path.insert(0, str(root / "tests/support"))
-from scratch import copy_worktree, finish  # noqa: E402
+from scratch import copy_worktree, expectation, finish, step_runner  # noqa: E402
 work = work_dir / "new-task"
 copy = work / "repo"
 build = copy / "build"
 N, NAME, FOLDER, STEM, LABEL = 13, "textures", "13-textures", "textures", "Textures"
 failures = []
 started = time.time()
-
-
-def run(argv, timeout=900, cwd=None, env=None, check=True, what=None):
-    """Runs argv in the copy; a failure is recorded (with the end of its output) and returned."""
-    t = time.time()
-    p = subprocess.run([str(a) for a in argv], cwd=cwd or copy, env=env, capture_output=True, text=True,
-                       timeout=timeout)
-    print(f"  {what or ' '.join(map(str, argv))[:110]}: exit {p.returncode}, {time.time() - t:.0f} s", flush=True)
-    if check and p.returncode != 0:
-        failures.append(f"{what or argv}: exit {p.returncode}\n{(p.stdout + p.stderr)[-2500:]}")
-    return p
-
-
-def expect(condition, message):
-    if not condition:
-        failures.append(message)
-    return condition
+run = step_runner(copy, failures)  # each step: its exit and seconds printed, a failure recorded
+expect = expectation(failures)
 
 
 def copy_repository():
