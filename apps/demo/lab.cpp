@@ -187,6 +187,20 @@ const char* sequenceName(SampleSequence sequence) {
   return "?";
 }
 
+// The pdf the sampler reported with each drawn sample against pdf of its
+// direction (drawnPdf), into result's pdf counts.
+void compareReportedPdfs(const WarpSetup& setup, const std::vector<Vec2>& drawnU, const std::vector<double>& drawnPdf,
+                         LabResult* result) {
+  for (size_t k = 0; k < drawnU.size(); ++k) {
+    const std::optional<double> reported = setup.reportedPdf(drawnU[k]);
+    if (!reported) continue;
+    ++result->pdfChecked;
+    if (std::abs(drawnPdf[k] - *reported) <= kPdfAgreement * *reported && drawnPdf[k] > 0.0) continue;
+    ++result->pdfDisagree;
+    if (!(drawnPdf[k] > 0.0)) ++result->pdfReadsZero;
+  }
+}
+
 }  // namespace
 
 std::vector<demo::Parameter> parametersOf(const Warp& warp) {
@@ -226,8 +240,9 @@ LabResult runWarp(const Warp& warp, const Values& values, const WarpFiles& files
   std::vector<double> shownX, shownY;
   std::vector<double> firstCounts(bins.counts.size(), 0.0);  // a mixture's samples the first strategy drew
   std::vector<Vec3> drawn;  // every binned sample, for its own pdf
+  std::vector<Vec2> drawnU;  // and the u that drew it
   std::vector<int> drawnCell;
-  drawn.reserve(size_t(n)), drawnCell.reserve(size_t(n));
+  drawn.reserve(size_t(n)), drawnU.reserve(size_t(n)), drawnCell.reserve(size_t(n));
   for (int i = 0; i < n; ++i) {
     Sampler sampler(0, uint32_t(i), seed, sequence, uint32_t(n));
     const Vec2 u = sampler.next2D();
@@ -247,7 +262,7 @@ LabResult runWarp(const Warp& warp, const Values& values, const WarpFiles& files
     }
     bins.counts[size_t(cell)] += 1.0;
     if (setup.drawnByFirst && setup.drawnByFirst(u)) firstCounts[size_t(cell)] += 1.0;
-    drawn.push_back(*p), drawnCell.push_back(cell);
+    drawn.push_back(*p), drawnU.push_back(u), drawnCell.push_back(cell);
   }
 
   // The pdf over the same bins, and the test. A sample with no pdf to match
@@ -262,6 +277,7 @@ LabResult runWarp(const Warp& warp, const Values& values, const WarpFiles& files
   // midpoints all missed a sharp edge of the pdf, hit by samples with a
   // positive pdf, is the integration's rounding: pooled with the sparse cells.
   const std::vector<double> drawnPdf = setup.pdf(drawn);
+  if (setup.reportedPdf) compareReportedPdfs(setup, drawnU, drawnPdf, &result);
   int zeroPdf = 0;
   std::vector<double> tested = expected;
   for (size_t k = 0; k < drawn.size(); ++k) {
@@ -308,6 +324,11 @@ LabResult runWarp(const Warp& warp, const Values& values, const WarpFiles& files
     result.test.pValue = 1.0;
   }
   if (result.outside > 0) result.test.failure = format("%d samples landed outside the domain", result.outside);
+  if (result.pdfDisagree > 0) {
+    result.test.failure = format("%d of %d samples have a pdf (read back from the direction) off the one sampled "
+                                 "with it by more than %g%%, %d of them 0", result.pdfDisagree, result.pdfChecked,
+                                 100.0 * kPdfAgreement, result.pdfReadsZero);
+  }
   result.accepted = result.test.failure.empty() && result.test.pValue > kSignificance && result.pdfIntegral < 1.01 &&
                     (missingMass || fewLost);
 
@@ -422,6 +443,10 @@ LabResult runWarp(const Warp& warp, const Values& values, const WarpFiles& files
                       missingMass ? ""
                       : fewLost   ? "; no more than the 1 % its integration may miss"
                                   : "; more than the 1 % its integration may miss");
+  }
+  if (result.pdfChecked > 0 && result.pdfDisagree == 0) {
+    numbers << format("the pdf read back from each of %d directions agrees with the one sampled with it to %g%%\n",
+                      result.pdfChecked, 100.0 * kPdfAgreement);
   }
   if (!result.test.failure.empty()) {
     numbers << "chi-square: " << result.test.failure << "\n";

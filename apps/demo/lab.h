@@ -47,6 +47,12 @@ struct WarpSetup {
   // rule cannot do it (a small light's pdf, which has no bound at its
   // outline); unset: the midpoint rule.
   std::function<std::vector<double>(double n)> expectedCounts;
+  // The pdf the sampler reports with its own sample of u (an environment
+  // sample carries one); nothing where it reports none, or where the check
+  // does not apply (a direction on a pixel's edge may round into the pixel
+  // beside it). Unset: no check. Set: pdf of each sample's direction must
+  // agree with it to kPdfAgreement and never be 0, or the warp is rejected.
+  std::function<std::optional<double>(Vec2 u)> reportedPdf;
   std::string mismatchMeans;  // what a rejection usually means, for this warp
   std::string note;           // printed with the numbers (which map, and its size)
 };
@@ -83,12 +89,19 @@ std::vector<demo::Parameter> parametersOf(const Warp& warp);
 // The significance level of the lab's verdict: a correct warp with
 // independent samples is rejected in 1 run in 1000.
 constexpr double kSignificance = 1e-3;
+// How far pdf(a sample's direction) may be from the pdf the sampler reported
+// with it (WarpSetup::reportedPdf), relative.
+constexpr double kPdfAgreement = 1e-3;
 
 struct LabResult {
   demo::DemoResult shown;  // the figure and its numbers
   ChiSquareResult test;
   double pdfIntegral = 0.0;  // the claimed pdf integrated over the domain (should be 1)
   int noSample = 0, outside = 0;
+  // Samples whose pdf read back from the direction is off the reported one
+  // by more than kPdfAgreement, and of those, how many read back 0; checked
+  // is how many were compared (0: the warp reports no pdf).
+  int pdfChecked = 0, pdfDisagree = 0, pdfReadsZero = 0;
   bool accepted = false;
   std::string csv;  // cell, position, observed, expected: one line per cell
 };

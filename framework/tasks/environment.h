@@ -3,7 +3,8 @@
 // not the student's, the programs link the course's reference in its place).
 //
 // Equirectangular maps, +y up: a direction w has
-//   theta = acos(w.y) in [0, pi]   (0 at the zenith, row 0 of the image)
+//   theta = atan2(sqrt(w.x^2 + w.z^2), w.y) in [0, pi]   (0 at the zenith, row 0
+//           of the image; the same angle as acos(w.y), which loses it near the poles)
 //   phi   = atan2(w.z, w.x) in [0, 2 pi)
 //   (u, v) = (phi / (2 pi), theta / pi),   pixel (i, j) covers
 //   u in [i/W, (i+1)/W), v in [j/H, (j+1)/H).

@@ -26,10 +26,13 @@
 namespace pathlab {
 
 // T7.1 — Spherical coordinates of the map (y is up):
-//   theta = acos(w.y),  phi = atan2(w.z, w.x) moved into [0, 2 pi),
+//   theta = atan2(sqrt(w.x^2 + w.z^2), w.y),  phi = atan2(w.z, w.x) moved into [0, 2 pi),
 //   u = phi / (2 pi),   v = theta / pi;
 // and back: w = (sin(theta) cos(phi), cos(theta), sin(theta) sin(phi)).
-// PITFALL: clamp w.y into [-1, 1] before acos (rounding can leave it just outside).
+// PITFALL: not theta = acos(w.y). Near a pole w.y = cos(theta) = 1 - theta^2 / 2
+// is 1 to within float rounding: below theta = 3.45e-4 it rounds to exactly 1
+// (theta reads 0, the pdf 0), and below about 5e-3 sin(theta) is off by more
+// than 0.1 %. The horizontal length sqrt(x^2 + z^2) = sin(theta) keeps its digits.
 // PITFALL: phi + 2 pi rounds to exactly 2 pi for a phi just below 0 (u = 1):
 // keep u below 1: min(u, the largest float below 1), or wrap a u of 1 to 0
 // (u is periodic: both name the seam's meridian).

@@ -2,6 +2,8 @@
 // routines, called as this build links them (the student's file or the
 // reference), each against its own pdf. apps/CMakeLists.txt compiles this
 // file into the lab; addEnvironmentWarps is listed with the other tasks'.
+#include <cmath>
+
 #include "lab_support.h"
 #include "tasks/environment.h"
 #include "util/distribution.h"
@@ -68,6 +70,18 @@ Image userMap(const std::string& path, std::string* note) {
   return map;
 }
 
+// Whether w's (u, v), by the stable formula, lies within 1e-4 of a pixel's
+// edge (the poles aside): such a direction may round into the pixel beside
+// the one sampled, whose pdf differs.
+bool onPixelEdge(const EnvironmentDistribution& d, const Vec3& w) {
+  double phi = std::atan2(double(w.z), double(w.x));
+  if (phi < 0.0) phi += 2.0 * kPi;
+  const double theta = std::atan2(std::hypot(double(w.x), double(w.z)), double(w.y));
+  const double column = phi / (2.0 * kPi) * d.width, row = theta / kPi * d.height;
+  const bool innerRowEdge = std::round(row) >= 1 && std::round(row) <= d.height - 1;
+  return std::abs(column - std::round(column)) < 1e-4 || (innerRowEdge && std::abs(row - std::round(row)) < 1e-4);
+}
+
 Warp environmentWarp() {
   Warp warp{"environment", "T7.5", "sampleEnvironment against environmentPdf over the sphere",
             {{"map", 0, 0, 3, true, false,
@@ -87,8 +101,16 @@ Warp environmentWarp() {
                 return e->direction;
               };
               s.pdf = pointwise([distribution](const Vec3& w) { return double(environmentPdf(*distribution, w)); });
+              // Each sample's pdf against environmentPdf of its direction: at
+              // the poles a theta from acos(y) makes them disagree.
+              s.reportedPdf = [distribution](Vec2 u) -> std::optional<double> {
+                const std::optional<EnvironmentSample> e = sampleEnvironment(*distribution, u);
+                if (!e || onPixelEdge(*distribution, e->direction)) return std::nullopt;
+                return double(e->pdfSolidAngle);
+              };
               s.mismatchMeans = "the pdf misses the Jacobian of the map: pdf = p(u, v) / (2 pi^2 sin theta); or "
-                                "the CDF is off by one row or column";
+                                "the CDF is off by one row or column; or (pdfs that disagree near the poles) theta "
+                                "from acos(y), not atan2(sqrt(x^2 + z^2), y)";
               return s;
             }};
   warp.takesEnvironmentMap = true;

@@ -132,7 +132,7 @@ Color conductorBrdf(const Vec3& wo, const Vec3& wi, const RoughConductor& conduc
 //   1. stretch: v = normalize(alpha wo.x, alpha wo.y, wo.z)
 //   2. a basis: t1 = normalize(-v.y, v.x, 0) (or (1, 0, 0) if v is +z), t2 = v x t1
 //   3. a point on the unit disk: r = sqrt(u.x), phi = 2 pi u.y, p1 = r cos(phi), p2 = r sin(phi);
-//      squeeze it onto the part v sees: s = (1 + v.z) / 2, p2 = (1 - s) sqrt(1 - p1^2) + s p2
+//      squeeze it onto the part v sees: s = (1 + v.z) / 2, p2 = (1 - s) sqrt(max(0, 1 - p1^2)) + s p2
 //   4. up onto the hemisphere: n = p1 t1 + p2 t2 + sqrt(max(0, 1 - p1^2 - p2^2)) v
 //   5. unstretch: m = normalize(alpha n.x, alpha n.y, max(0, n.z))
 // Why visible normals: the facets wo cannot see never reflect toward it;

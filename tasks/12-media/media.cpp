@@ -71,7 +71,9 @@ FreeFlight sampleFreeFlight(float sigmaT, float tMax, float u) {
 //   else:    s = (1 - g^2) / (1 - g + 2 g u.x),   cos = (1 + g^2 - s^2) / (2 g)
 // then a direction at that cosine around `direction`: Frame::fromNormal
 // (util/frame.h) builds the axes. Near g = 0 the second form divides 0 by
-// 0: use the first below |g| ~ 1e-3.
+// 0: use the first below |g| ~ 1e-3. Clamp cos into [-1, 1]: 1 + g^2 - s^2
+// cancels, and rounding can leave it just outside (then sin = sqrt(1 - cos^2)
+// is NaN).
 //
 // PITFALL: pbrt and others write the cosine against the direction back to
 // the viewer, which flips the sign of g. Here g > 0 must mean onwards.

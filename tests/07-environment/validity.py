@@ -17,6 +17,11 @@ MUTANTS = [
      "candidate's own pdf passes it)",
      [("      const double weight = std::max(0.0, double(luminance(map.at(i, j)))) * sinTheta;",
        "      const double weight = sinTheta;")]),
+    ("acos-theta", "theta = acos(y), as the handout once said: near a pole y rounds to 1, and a direction's pdf "
+     "disagrees with its sample's (0 within 3.45e-4 rad)",
+     [("  // Not acos(y): near a pole y = cos(theta) rounds to 1 and theta is lost.\n"
+       "  const float theta = std::atan2(std::sqrt(direction.x * direction.x + direction.z * direction.z), direction.y);",
+       "  const float theta = std::acos(std::clamp(direction.y, -1.0f, 1.0f));")]),
     ("hemisphere-not-sphere", "uniform 'sphere' samples only one hemisphere",
      [("  const float z = 1.0f - 2.0f * u.x;\n  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), z};",
        "  const float z = u.x;\n  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), z};")]),

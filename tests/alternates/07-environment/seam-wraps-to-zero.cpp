@@ -23,7 +23,8 @@ int findInterval(const float* cdf, int n, float x) {
 }  // namespace
 
 Point2 directionToEquirect(const Vec3& direction) {
-  const float theta = std::acos(std::clamp(direction.y, -1.0f, 1.0f));
+  // Not acos(y): near a pole y = cos(theta) rounds to 1 and theta is lost.
+  const float theta = std::atan2(std::sqrt(direction.x * direction.x + direction.z * direction.z), direction.y);
   float phi = std::atan2(direction.z, direction.x);
   if (phi < 0.0f) phi += 2.0f * kPi;
   const float u = phi / (2.0f * kPi);
