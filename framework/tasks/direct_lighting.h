@@ -35,6 +35,9 @@ std::optional<LightDirection> lightDirection(const Point3& from, const AreaSampl
 // T4.4: the radiance reflected towards wo at `hit` by light arriving straight
 // from the lights (no bounces), with shadows: one sample per point light,
 // context.settings.lightSamples samples per area light and of the environment.
+// Every random number comes from `sampler`, in any order: the same sampler
+// gives the same estimate (the suite compares a scene with its moved, turned
+// and resized copy under the same random numbers).
 Color estimateDirectLighting(TraceContext& context, const Hit& hit, const Bsdf& bsdf, const Vec3& wo,
                              Sampler& sampler);
 

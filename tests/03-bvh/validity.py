@@ -11,6 +11,13 @@ MUTANTS = [
     ("median-split", "object median split instead of SAH",
      [("const Split split = depth < kMedianSplitDepth ? bestSplit(node, centroidBounds, first, count) : Split{};",
        "const Split split{};\n    (void)&Builder::bestSplit;")]),
+    ("edge-sum-cost", "SAH that costs boxes by the sum of their edges, not their surface area: a valid tree, "
+     "worse where long thin boxes compete with compact ones",
+     [("    const float parentArea = node.bounds.surfaceArea();",
+       "    const auto edgeSum = [](const Aabb& b) { const Vec3 e = b.extent(); return e.x + e.y + e.z; };\n"
+       "    const float parentArea = edgeSum(node.bounds);"),
+      ("        rightArea[b] = box.surfaceArea();", "        rightArea[b] = edgeSum(box);"),
+      ("(box.surfaceArea() * float(n) + rightArea[b + 1]", "(edgeSum(box) * float(n) + rightArea[b + 1]")]),
     ("any-hit-ignores-range", "shadow rays count hits beyond the light",
      [("        if (geometry.intersect(slot, ray, range)) return true;", "        if (geometry.intersect(slot, ray, Interval{range.min, kInfinity})) return true;")]),
     ("no-stats", "traversal statistics not counted",

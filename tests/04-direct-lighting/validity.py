@@ -11,6 +11,15 @@ MUTANTS = [
      [("sum += f * sample.radiance * (cosSurface / direction->pdfSolidAngle);", "sum += f * sample.radiance * (cosSurface);")]),
     ("shadow-ray-reaches-light", "shadow rays run the full distance to the light",
      [("Interval{0.0f, remaining * (1.0f - kShadowShortening)}", "Interval{0.0f, remaining * 1.0001f}")]),
+    ("shadow-ray-fixed-shortening", "shadow rays end a fixed 1e-4 short of the light, not a fraction of the "
+     "distance: right at scale 1, wrong in a scene 1000 times smaller or with the lights thousands of units away",
+     [("Interval{0.0f, remaining * (1.0f - kShadowShortening)}", "Interval{0.0f, remaining - 1e-4f}")]),
+    ("one-sky-sample", "the sky sampled once whatever -l says: unbiased, but the handout asks for as many samples "
+     "as an area light gets",
+     [("    for (int i = 0; i < context.settings.lightSamples; ++i) {\n      const std::optional<EnvironmentLightSample>",
+       "    for (int i = 0; i < 1; ++i) {\n      const std::optional<EnvironmentLightSample>"),
+      ("      sum += f * sample->radiance * (cosSurface / sample->pdfSolidAngle);\n    }\n    radiance += sum / float(context.settings.lightSamples);",
+       "      sum += f * sample->radiance * (cosSurface / sample->pdfSolidAngle);\n    }\n    radiance += sum;")]),
     ("fixed-epsilon-offset", "ray origins moved by a fixed 1e-4",
      [("    result[a] = std::abs(p[a]) < kOrigin ? p[a] + kFloatScale * n[a] : moved;", "    (void)moved, (void)kOrigin, (void)kFloatScale;\n    result[a] = p[a] + 1e-4f * n[a];")]),
     ("relative-epsilon-offset", "ray origins moved by 1e-4 of the coordinates' size: too little near the origin of a large triangle",

@@ -1,0 +1,93 @@
+// Metamorphic relations: a whole scene moved, turned, mirrored or resized,
+// whose answer the judge knows without computing it (the same picture, the
+// same estimate at the moved point). Each suite picks the relations its
+// task's code could break (docs/metamorphic.md lists them and what each
+// catches): an absolute epsilon fails at another scale, a y-up assumption
+// under a rotation, a winding assumption under a mirror.
+#pragma once
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "check.h"
+#include "core/scene.h"
+#include "statistics.h"
+
+namespace pathlab::test {
+
+using DMat3 = glm::dmat3;
+
+// x -> scale R x + offset, in double and rounded once. R is a rotation, or
+// a rotation times a mirror (determinant -1). What the scene's light does
+// under it: radiance is unchanged; a point light's intensity grows with
+// scale^2 (irradiance I cos / r^2 stays); a medium's extinction per unit
+// length shrinks with 1 / scale (the optical depth stays).
+struct Similarity {
+  std::string name;  // for the hint: "the scene 1000 times smaller"
+  double scale = 1.0;
+  DMat3 rotation{1.0};
+  DVec3 offset{0.0};
+
+  Point3 point(const Point3& p) const { return Point3(scale * (rotation * DVec3(p)) + offset); }
+  Vec3 direction(const Vec3& d) const { return Vec3(glm::normalize(rotation * DVec3(d))); }
+  bool mirrors() const { return glm::determinant(rotation) < 0.0; }
+};
+
+// A rotation by `degrees` about `axis` (any length).
+inline DMat3 rotationAbout(DVec3 axis, double degrees) {
+  return DMat3(glm::rotate(glm::dmat4(1.0), glm::radians(degrees), glm::normalize(axis)));
+}
+// The mirror x -> -x.
+inline DMat3 mirrorX() { return DMat3(DVec3(-1, 0, 0), DVec3(0, 1, 0), DVec3(0, 0, 1)); }
+
+// The scene under t. A mirror swaps two corners of every triangle, so that
+// each face still faces the mirror image of where it faced (one-sided lights
+// keep lighting the same things). An environment map is fixed to the world
+// axes: only a constant sky is moved with the scene (a rotation of a map is
+// refused, not silently wrong).
+inline Scene transformed(const Scene& scene, const Similarity& t) {
+  Scene out = scene;
+  const bool rotates = t.rotation != DMat3(1.0);
+  if (rotates && out.environment && !out.environment->image.pixels.empty()) {
+    throw std::logic_error("a rotation of a scene lit by an environment map: the map would have to turn too");
+  }
+  for (TriangleMesh& mesh : out.meshes) {
+    for (Point3& p : mesh.positions) p = t.point(p);
+    for (Vec3& n : mesh.normals) n = t.direction(n);
+    if (t.mirrors()) {
+      for (glm::uvec3& triangle : mesh.triangles) std::swap(triangle.y, triangle.z);
+    }
+  }
+  for (Sphere& sphere : out.spheres) {
+    sphere.center = t.point(sphere.center);
+    sphere.radius = float(t.scale * double(sphere.radius));
+  }
+  for (PointLight& light : out.pointLights) {
+    light.position = t.point(light.position);
+    light.intensity *= float(t.scale * t.scale);
+  }
+  for (Medium& medium : out.media) medium.sigmaT = float(double(medium.sigmaT) / t.scale);
+  Camera& camera = out.camera;
+  camera.position = t.point(camera.position);
+  camera.lookAt = t.point(camera.lookAt);
+  camera.up = t.direction(camera.up);
+  camera.apertureRadius = float(t.scale * double(camera.apertureRadius));
+  camera.focalDistance = float(t.scale * double(camera.focalDistance));
+  out.primitives.clear();  // Rig indexes them again
+  return out;
+}
+
+// |a - b| within 5 standard errors of their difference, each capped at its
+// suite's ceiling (limitNoise: the candidate's own noise can only make this
+// fail), plus `relative` of the larger for float rounding. For two estimates
+// from the same random numbers the difference is far smaller; from different
+// ones, a correct estimator fails one check in 1.7 million.
+inline bool sameEstimate(const MeanEstimate& a, const MeanEstimate& b, double relative = 1e-3) {
+  const double sa = a.judgedStandardError(), sb = b.judgedStandardError();
+  return std::abs(a.mean() - b.mean()) <=
+         5.0 * std::sqrt(sa * sa + sb * sb) + relative * std::max(std::abs(a.mean()), std::abs(b.mean())) + 1e-12;
+}
+
+}  // namespace pathlab::test
