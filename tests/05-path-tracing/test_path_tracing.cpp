@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "check.h"
+#include "metamorphic.h"
 #include "image_scenes.h"
 #include "image_test.h"
 #include "grading.h"
@@ -266,6 +267,83 @@ TEST_CASE("T5.2 path tracing: inside a closed emitting enclosure L = Le / (1 - r
   const double expected = 0.5 * geometricSum(0.5, 100);  // = 1 to 1e-30
   INFO(m.describe(expected));
   CHECK(m.agrees(expected));
+}
+
+namespace {
+
+// The candidate's paths through the Cornell box under t, `perRay` random
+// streams per ray, the same streams whatever t is: one value (the mean of
+// the channels) per path.
+std::vector<double> pairedPaths(const Scene& scene, const Similarity& t, const std::vector<Ray>& rays, int perRay) {
+  Rig rig(transformed(scene, t));
+  TraceContext context = rig.context(5, 1);
+  std::vector<calls::PathQuery> queries;
+  for (size_t r = 0; r < rays.size(); ++r)
+    for (int i = 0; i < perRay; ++i) queries.emplace_back(t.ray(rays[r]), uint32_t(r * perRay + i), testSeed(58));
+  std::vector<double> values;
+  for (const Color& L : candidate::tracePaths(context, queries)) values.push_back((L.x + L.y + L.z) / 3.0);
+  return values;
+}
+
+}  // namespace
+
+TEST_CASE("T5.2 metamorphic: the Cornell box 1024 times larger or reordered gives the same paths; 10,000 times smaller, or turned and moved 20,000 away, the same mean" *
+          grading(2, "nothing in a path may depend on the scene's size, place or order: leave each surface by "
+                     "offsetRayOrigin (task 4), never by a fixed distance or a ray range starting at an epsilon")) {
+  // The relations (docs/metamorphic.md). 1024 times larger every float is
+  // scaled exactly, and so are task 4's offsets (a number of float spacings):
+  // from the same random numbers each path carries the same radiance. A
+  // rotation turns the frames the BSDF samples in, and far from the origin
+  // or at a tiny scale the offsets are no longer in proportion: there the
+  // box's mean radiance is compared, within 5 standard errors, each at most
+  // the reference's. The estimator must first be right: inside a closed
+  // enclosure L = Le / (1 - rho).
+  {
+    Rig rig(closedEnclosure(0.5f, 0.5f));
+    TraceContext context = rig.context(100, 1);
+    MeanEstimate m = pathMean(context, Point3(0.1f, -0.2f, 0.05f), 4000);
+    INFO("inside the enclosure: " << m.describe(1.0));
+    HINT("the relations below compare your paths with themselves, so they must first be right: inside a closed "
+         "enclosure of albedo 1/2 and emission 1/2, L = Le / (1 - rho) = 1");
+    REQUIRE(m.agrees(1.0));
+  }
+  const Scene box = cornellBox(16, 16, 1, 5, false);
+  Random random(59);
+  std::vector<Ray> rays;
+  for (int i = 0; i < 1000; ++i) {
+    const DVec3 target(random.uniform(-0.9, 0.9), random.uniform(0.05, 1.45), random.uniform(-0.9, 0.5));
+    rays.push_back(Ray{box.camera.position, Vec3(glm::normalize(target - DVec3(box.camera.position)))});
+  }
+  constexpr int kPerRay = 20;
+  const std::vector<double> base = pairedPaths(box, Similarity{"as it is"}, rays, kPerRay);
+  const std::string larger = brokenPairs(base, kPerRay, pairedPaths(box, {"larger", 1024.0}, rays, kPerRay));
+  INFO("the box 1024 times larger: " << larger);
+  HINT("the paths change when the whole box is 1024 times larger (every coordinate scaled exactly): a bounce ray "
+       "that starts on the surface with a fixed epsilon hits its own surface again there; leave each surface by "
+       "offsetRayOrigin");
+  CHECK(larger.empty());
+  Scene reordered = box;
+  std::reverse(reordered.meshes.begin(), reordered.meshes.end());
+  std::reverse(reordered.spheres.begin(), reordered.spheres.end());
+  const std::string reorderedBroken = brokenPairs(base, kPerRay, pairedPaths(reordered, {"reordered"}, rays, kPerRay));
+  INFO("the meshes and spheres in reverse order: " << reorderedBroken);
+  HINT("the paths change when the meshes and spheres come in another order: a material or light looked up by a "
+       "fixed index fails here");
+  CHECK(reorderedBroken.empty());
+  MeanEstimate before, smaller, far;
+  for (double v : base) before.add(v);
+  for (double v : pairedPaths(box, {"smaller", 1e-4, DMat3(1.0), DVec3(0.05)}, rays, kPerRay)) smaller.add(v);
+  const Similarity moved{"far", 10.0, rotationAbout({0, 1, 0}, 120), {2e4, 5e3, -1e4}};
+  for (double v : pairedPaths(box, moved, rays, kPerRay)) far.add(v);
+  for (MeanEstimate* m : {&before, &smaller, &far}) limitNoise(*m, "05-path-tracing");
+  INFO("the box 10,000 times smaller: " << smaller.describe(before.mean()));
+  HINT("the picture changes when the whole box is 10,000 times smaller: an absolute epsilon? a bounce ray whose "
+       "range starts at a fixed t (1e-4) skips the walls next to it; leave each surface by offsetRayOrigin");
+  CHECK(sameEstimate(before, smaller));
+  INFO("the box turned, 10 times larger and 20,000 units away: " << far.describe(before.mean()));
+  HINT("the picture changes when the box is turned and moved 20,000 units from the origin: an offset or a ray "
+       "range fixed in absolute units, or a direction taken from a world axis, fails here");
+  CHECK(sameEstimate(before, far));
 }
 
 TEST_CASE("T5.2 path tracing: a point light of intensity pi at the centre of a closed sphere of albedo 1/2 gives 1" *

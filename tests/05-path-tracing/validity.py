@@ -28,6 +28,12 @@ MUTANTS = [
      "is the albedo on every sample, so the energy test's mean alone passes it",
      [("  const float r = std::sqrt(u.x), phi = 2.0f * kPi * u.y;\n  return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};",
        "  (void)u;\n  return {0.0f, 0.0f, 1.0f};")]),
+    ("bounce-range-epsilon", "each bounce leaves from the hit point itself, its range starting at t = 1e-4 instead "
+     "of an offset origin: right at scale 1, walls skipped in a small scene and acne in a large one",
+     [("    const std::optional<Hit> hit = context.intersect(ray, Interval{0.0f, kInfinity});",
+       "    const std::optional<Hit> hit = context.intersect(ray, Interval{1e-4f, kInfinity});"),
+      ("    ray = Ray{offsetRayOrigin(hit->point, hit->geometricNormal, sample->wi), sample->wi};",
+       "    ray = Ray{hit->point, sample->wi};")]),
     ("depth-off-by-one", "one bounce more than -m allows",
      [("    if (bounce >= context.settings.maxDepth) break;", "    if (bounce > context.settings.maxDepth) break;")]),
     ("direct-light-only-at-first-hit", "next-event estimation only at the camera hit",

@@ -7,13 +7,18 @@
 #pragma once
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "check.h"
 #include "core/scene.h"
 #include "statistics.h"
+#include "util/ray.h"
 
 namespace pathlab::test {
 
@@ -33,6 +38,7 @@ struct Similarity {
   Point3 point(const Point3& p) const { return Point3(scale * (rotation * DVec3(p)) + offset); }
   Vec3 direction(const Vec3& d) const { return Vec3(glm::normalize(rotation * DVec3(d))); }
   bool mirrors() const { return glm::determinant(rotation) < 0.0; }
+  Ray ray(const Ray& r) const { return Ray{point(r.origin), direction(r.direction)}; }
 };
 
 // A rotation by `degrees` about `axis` (any length).
@@ -77,6 +83,23 @@ inline Scene transformed(const Scene& scene, const Similarity& t) {
   camera.focalDistance = float(t.scale * double(camera.focalDistance));
   out.primitives.clear();  // Rig indexes them again
   return out;
+}
+
+// Paired answers: "" when `moved` gives the same answers as `base` (more
+// than 1e-3 apart, relative, in at most 0.5 % of them: a rounding may move
+// a sample across a shadow's edge); else how many differ, and where (answers
+// come `perPoint` to a point).
+inline std::string brokenPairs(const std::vector<double>& base, size_t perPoint, const std::vector<double>& moved) {
+  if (moved.size() != base.size()) return "a different number of answers";
+  size_t differing = 0;
+  std::ostringstream where;
+  for (size_t k = 0; k < base.size(); ++k) {
+    if (std::abs(moved[k] - base[k]) <= 1e-3 * std::max(std::abs(base[k]), std::abs(moved[k])) + 1e-12) continue;
+    if (differing++ < 3) where << " point " << k / perPoint << ": " << base[k] << " became " << moved[k] << ";";
+  }
+  if (differing <= base.size() / 200) return "";
+  return std::to_string(differing) + " of " + std::to_string(base.size()) + " answers differ by more than 1e-3;" +
+         where.str();
 }
 
 // |a - b| within 5 standard errors of their difference, each capped at its
