@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -310,6 +311,56 @@ TEST_CASE("T11.3 pixel: stops after the first whole batch where the rule holds, 
   }
   HINT("too few pixels could be judged: most stops were ambiguous, which a correct pixel loop never makes");
   CHECK(judged > 200);
+}
+
+TEST_CASE("T11.3 metamorphic: samples 2^40 times brighter or darker stop at the same n, the estimate scaled alike" *
+          grading(2, "the rule is relative (half-width against tolerance x mean), so nothing in it may compare a "
+                     "variance, a half-width or a mean with a fixed number: a pixel's radiance can be 1e-12 or 1e12")) {
+  // The relation (docs/metamorphic.md): scaling every sample by a power of
+  // two scales every float exactly, so a correct pixel stops at the same n,
+  // as confident, with its estimate scaled exactly alike. Beside it, the
+  // truth: unscaled, each pixel stops where the judge's own rule says.
+  Random random(29);
+  const AdaptiveSettings a = settings(0.05, 32, 64, 1024);
+  const std::vector<std::vector<Color>> sequences = someSequences(a, random, 40);
+  const std::vector<candidate::ServedPixel> base = candidate::samplePixels(sequences, a, candidate::Serving::AllAtOnce);
+  HINT("samplePixels must return one pixel per sequence of samples it was given");
+  REQUIRE(base.size() == sequences.size());
+  int wrongStops = 0;
+  for (size_t k = 0; k < sequences.size(); ++k) {
+    const Expected e = expectedStop(sequences[k], a);
+    if (!e.ambiguous && base[k].pixel.samples != e.n) ++wrongStops;
+  }
+  INFO(wrongStops << " of " << sequences.size() << " pixels stop where the rule does not");
+  HINT("the relation below compares your pixels with themselves, so they must first stop where the rule says: "
+       "after the first whole batch with 1.96 sigma / sqrt(n) <= tolerance x mean, or at the maximum");
+  REQUIRE(wrongStops == 0);
+  for (const double scale : {0x1p-40, 0x1p40}) {
+    std::vector<std::vector<Color>> scaled = sequences;
+    for (std::vector<Color>& sequence : scaled)
+      for (Color& c : sequence) c *= float(scale);
+    const std::vector<candidate::ServedPixel> moved = candidate::samplePixels(scaled, a, candidate::Serving::AllAtOnce);
+    HINT("samplePixels must return one pixel per sequence of samples it was given");
+    REQUIRE(moved.size() == sequences.size());
+    int differing = 0;
+    std::ostringstream where;
+    for (size_t k = 0; k < sequences.size(); ++k) {
+      const AdaptivePixel &before = base[k].pixel, &after = moved[k].pixel;
+      const Vec3 expected = Vec3(before.estimate) * float(scale);
+      const bool same = after.samples == before.samples && after.confident == before.confident &&
+                        near(Vec3(after.estimate), expected, 1e-5f * std::max(1e-30f, maxComponent(glm::abs(expected))));
+      if (same) continue;
+      if (differing++ < 3) {
+        where << " pixel " << k << ": " << before.samples << " samples became " << after.samples << ";";
+      }
+    }
+    CAPTURE(scale);
+    INFO(differing << " of " << sequences.size() << " pixels change when every sample is scaled;" << where.str());
+    HINT("a pixel stops elsewhere, or its estimate does not scale, when every sample is 2^40 times brighter or "
+         "darker: a variance, half-width or mean compared with a fixed number (an epsilon such as 1e-6) breaks "
+         "the rule's scale; compare only 1.96 sigma / sqrt(n) with tolerance x mean");
+    CHECK(differing == 0);
+  }
 }
 
 TEST_CASE("T11.3 pixel: never past the maximum; a dark pixel with rare light runs to it and says so" *

@@ -1,6 +1,10 @@
 """Task 11's seeded mutants and alternates (tests/mutants/generate.py says what they are)."""
 
 MUTANTS = [
+    ("spread-epsilon", "a half-width below 1e-6 taken as no spread at all, so the pixel stops: right for pixels "
+     "of ordinary brightness, every dark pixel stops at its minimum",
+     [("  return halfWidth <= settings.tolerance * stats.mean;",
+       "  return halfWidth < 1e-6 || halfWidth <= settings.tolerance * stats.mean;")]),
     ("no-spread-never-stops", "a half-width of 0 taken as not measured yet: a pixel with no spread never stops",
      [("  return halfWidth <= settings.tolerance * stats.mean;",
        "  return halfWidth > 0.0 && halfWidth <= settings.tolerance * stats.mean;")]),

@@ -25,6 +25,7 @@
 #include "image_scenes.h"
 #include "image_test.h"
 #include "meshes.h"
+#include "metamorphic.h"
 #include "reference_noise.h"
 #include "render_support.h"
 #include "scene/scene_io.h"
@@ -231,6 +232,58 @@ TEST_CASE("T12.1 free flight: thin and dense media, a surface at 0, u at the end
 }
 
 // ---- T12.2 ------------------------------------------------------------------
+
+TEST_CASE("T12.1 metamorphic: a medium 2^20 times thinner over a distance 2^20 times longer gives the same flights, scaled" *
+          grading(1, "only the optical depth sigmaT t matters: t = -ln(1 - u) / sigmaT scales with 1 / sigmaT, the "
+                     "density sigmaT exp(-sigmaT t) with sigmaT, the probability of passing not at all; no fixed "
+                     "epsilon on t, sigmaT or their product")) {
+  // The relation (docs/metamorphic.md): sigmaT / k and tMax k (k a power of
+  // two: every float scaled exactly) give each u the flight t k, with the
+  // density / k when it scatters and the same probability when it passes.
+  // Beside it, the truth: each answer's pdf is sigmaT exp(-sigmaT t) at its
+  // own t, or exp(-sigmaT tMax) for a pass.
+  std::vector<calls::FlightQuery> base;
+  Random random(121);
+  for (int i = 0; i < 2000; ++i) {
+    base.emplace_back(float(std::exp(random.uniform(-3.0, 3.0))), float(std::exp(random.uniform(-2.0, 2.0))),
+                      float(random.uniform()));
+  }
+  const std::vector<FreeFlight> before = candidate::sampleFreeFlight(base);
+  HINT("sampleFreeFlight must return one flight per query it was given");
+  REQUIRE(before.size() == base.size());
+  int untrue = 0;
+  for (size_t i = 0; i < base.size(); ++i) {
+    const auto [sigma, tMax, u] = base[i];
+    const FreeFlight& f = before[i];
+    const double truth = f.scattered ? double(sigma) * std::exp(-double(sigma) * f.t) : std::exp(-double(sigma) * tMax);
+    if (!(std::abs(double(f.pdf) - truth) <= 1e-4 * truth) || (f.scattered && !(f.t >= 0.0f && f.t < tMax))) ++untrue;
+  }
+  INFO(untrue << " of " << base.size() << " flights have a pdf that is not sigmaT exp(-sigmaT t) (or exp(-sigmaT tMax) "
+              << "for a pass), or a scattering t outside [0, tMax)");
+  HINT("the relation below compares your flights with themselves, so they must first be right: a scattering "
+       "flight's pdf is sigmaT exp(-sigmaT t) at its t in [0, tMax), a pass's is exp(-sigmaT tMax)");
+  REQUIRE(untrue == 0);
+  for (const float k : {0x1p-20f, 0x1p20f}) {
+    std::vector<calls::FlightQuery> scaled;
+    for (const auto& [sigma, tMax, u] : base) scaled.emplace_back(sigma / k, tMax * k, u);
+    const std::vector<FreeFlight> after = candidate::sampleFreeFlight(scaled);
+    HINT("sampleFreeFlight must return one flight per query it was given");
+    REQUIRE(after.size() == base.size());
+    int differing = 0;
+    for (size_t i = 0; i < base.size(); ++i) {
+      const FreeFlight &a = before[i], &b = after[i];
+      const bool same = a.scattered == b.scattered && std::abs(double(b.t) - double(a.t) * k) <= 1e-5 * double(a.t) * k &&
+                        std::abs(double(b.pdf) - double(a.pdf) / (a.scattered ? k : 1.0f)) <= 1e-5 * double(b.pdf);
+      if (!same) ++differing;
+    }
+    CAPTURE(k);
+    INFO(differing << " of " << base.size() << " flights change when sigmaT is divided by k and tMax multiplied by it");
+    HINT("a flight must depend on the optical depth alone: with sigmaT / k and tMax k each u gives t k, its density "
+         "/ k, and the same probability of passing; a fixed epsilon on t or sigmaT, or t computed as -ln(1 - u) "
+         "sigmaT, breaks that");
+    CHECK(differing == 0);
+  }
+}
 
 TEST_CASE("T12.2 phase: Henyey-Greenstein's value, a density over the sphere" *
           grading(2, "p = (1 - g^2) / (4 pi (1 + g^2 - 2 g cos)^1.5) with cos between the direction travelled and "
@@ -453,6 +506,59 @@ TEST_CASE("T12.3 transmittance: exp(-sigmaT d) in a fog, through interfaces into
                                                 {Ray{Point3(0, 0, 0), Vec3(0, 1, 0)}, kInfinity, inside, 0u, 308u}};
     checkTransmittance(scene, q, {0.0, std::exp(-1.3)}, "a sphere of sigmaT 1.3, radius 1, and a wall at x = 2");
   }
+}
+
+TEST_CASE("T12.3 metamorphic: media spheres 1024 times larger with sigmaT / 1024, or reordered, give the same transmittance" *
+          grading(1, "transmittance depends on the optical depth alone: nothing may be fixed in absolute units of "
+                     "length, and the media are found from the surfaces crossed, whatever their order")) {
+  // The relation (docs/metamorphic.md): lengths times 1024 with extinction
+  // / 1024 (every float scaled exactly) keep each optical depth, so each
+  // query's answer, from the same random numbers, is the same; so does the
+  // scene with its spheres in reverse order. Beside it, the truth: in a fog
+  // without surfaces, exp(-sigmaT d).
+  {
+    Scene fog;
+    fog.medium = addMedium(fog, 0.7f, Color(0.5f), 0.3f);
+    std::vector<calls::TransmittanceQuery> q = {{Ray{Point3(1, 2, 3), glm::normalize(Vec3(0.3f, -1, 0.2f))}, 1.0f,
+                                                 fog.medium, 0u, 311u}};
+    checkTransmittance(fog, q, {std::exp(-0.7)}, "a fog of sigmaT 0.7, no surfaces");
+  }
+  Scene scene;
+  const MediumIndex inside = addMedium(scene, 1.3f, Color(0.9f), 0.0f);
+  scene.medium = addMedium(scene, 0.25f, Color(0.9f), 0.5f);
+  addMediumSphere(scene, Point3(0, 0, 0), 1.0f, inside, false);
+  addMediumSphere(scene, Point3(3, 0, 0), 0.8f, inside, true);
+  Random random(122);
+  std::vector<calls::TransmittanceQuery> queries;
+  for (int i = 0; i < 400; ++i) {
+    const Point3 o(float(random.uniform(-2.0, 5.0)), float(random.uniform(-1.5, 1.5)), float(random.uniform(-1.5, 1.5)));
+    const Vec3 d(random.unitVector());
+    const bool fromInside = glm::length(o) < 1.0f;
+    for (uint32_t k = 0; k < 10; ++k) queries.emplace_back(Ray{o, d}, 4.0f, fromInside ? inside : scene.medium, k, testSeed(313));
+  }
+  auto answers = [&](const Scene& s, float scale) {
+    std::vector<calls::TransmittanceQuery> q = queries;
+    for (auto& query : q) {
+      std::get<0>(query).origin *= scale;
+      std::get<1>(query) *= scale;
+    }
+    const std::vector<float> values = candidate::transmittance(s, q);
+    return std::vector<double>(values.begin(), values.end());
+  };
+  const std::vector<double> base = answers(scene, 1.0f);
+  const std::string larger = brokenPairs(base, 10, answers(transformed(scene, {"larger", 1024.0}), 1024.0f));
+  INFO("the spheres 1024 times larger with sigmaT / 1024: " << larger);
+  HINT("the transmittance changes when every length is 1024 times longer and every sigmaT 1024 times smaller: "
+       "the optical depth sigmaT d is all that counts; a length or a step fixed in absolute units breaks it");
+  CHECK(larger.empty());
+  Scene reordered = scene;
+  std::reverse(reordered.meshes.begin(), reordered.meshes.end());
+  std::reverse(reordered.spheres.begin(), reordered.spheres.end());
+  const std::string reorderedBroken = brokenPairs(base, 10, answers(reordered, 1.0f));
+  INFO("the spheres in reverse order: " << reorderedBroken);
+  HINT("the transmittance changes when the scene's objects come in another order: the medium beyond a surface "
+       "comes from that surface (scene.mediumAcross), never from an object's index");
+  CHECK(reorderedBroken.empty());
 }
 
 TEST_CASE("T12.3 direct lighting in media: through the phase function in a fog, and onto a surface in it" *

@@ -4,6 +4,10 @@ MUTANTS = [
     ("interface-exits-to-vacuum", "an interface crossed by hand: its interior going in, a vacuum going out (not the scene's medium)",
      [("      medium = scene.mediumAcross(*hit, ray.direction, medium);",
        "      medium = glm::dot(ray.direction, hit->geometricNormal) < 0.0f ? scene.materials[hit->material].interior : kVacuum;")]),
+    ("surface-epsilon", "a flight that ends within 1e-4 of the surface counts as reaching it: right in a room, "
+     "wrong in a medium a millimetre deep",
+     [("  if (t < tMax) return {t, true, sigmaT * std::exp(-sigmaT * t)};",
+       "  if (t < tMax - 1e-4f) return {t, true, sigmaT * std::exp(-sigmaT * t)};")]),
     ("flight-rate-inverted", "t = -ln(1 - u) sigmaT: the mean free path taken for the extinction",
      [("const float t = -std::log1p(-u) / sigmaT;", "const float t = -std::log1p(-u) * sigmaT;")]),
     ("flight-ignores-surface", "every flight scatters, even past the surface",
