@@ -377,6 +377,48 @@ TEST_CASE("T3.2 build: boxes are costed by their surface area — a sheet pierce
   CHECK(sahCost(b.bvh) <= 1.15 * kReferenceSheet);
 }
 
+TEST_CASE("T3.2 metamorphic: the mesh with its axes cycled, mirrored or its triangles shuffled builds as good a tree" *
+          grading(1, "a builder must treat the three axes alike (try every axis, or the longest) and not depend on "
+                     "the order of its input: the SAH cost is a property of the geometry")) {
+  // The relations (docs/metamorphic.md): cycling x -> y -> z -> x, mirroring
+  // x, or shuffling the triangles changes nothing a correct builder looks
+  // at, so the tree's SAH cost (the judge's measure) stays within 2 % (a
+  // mirror moves centroids on bin boundaries into the other bin). Beside
+  // them, the truth: the cost itself is close to the reference's (T3.2's
+  // test of it; 39.92 on this mesh).
+  const Scene scan = scanLikeScene();
+  const Built base = build(scan);
+  HINT("the tree over the scan-like mesh must be valid before its cost is measured");
+  requireValid(base, scan.primitives.size());
+  const double cost = sahCost(base.bvh);
+  INFO("the scan-like mesh: SAH cost " << cost << " (reference 39.92)");
+  HINT("the relations below compare your trees with each other, so the first must be good: within 15 % of the "
+       "reference's SAH cost");
+  REQUIRE(cost <= 1.15 * 39.92);
+  Scene cycled = scan, mirrored = scan, shuffled = scan;
+  for (Point3& q : cycled.meshes[0].positions) q = Point3(q.z, q.x, q.y);
+  for (Point3& q : mirrored.meshes[0].positions) q.x = -q.x;
+  Random random = Random::fixed(131);
+  std::vector<glm::uvec3>& triangles = shuffled.meshes[0].triangles;
+  for (size_t i = triangles.size(); i > 1; --i) std::swap(triangles[i - 1], triangles[size_t(random.uniform(0.0, double(i)))]);
+  for (Scene* s : {&cycled, &mirrored, &shuffled}) s->indexPrimitives();
+  struct Case {
+    const Scene& scene;
+    const char* what;
+  };
+  for (const Case& c : {Case{cycled, "axes cycled"}, Case{mirrored, "mirrored in x"}, Case{shuffled, "triangles shuffled"}}) {
+    const Built b = build(c.scene);
+    CAPTURE(c.what);
+    HINT("the tree over the moved mesh must be valid (the message above names the node and the problem)");
+    requireValid(b, c.scene.primitives.size());
+    INFO("SAH cost " << sahCost(b.bvh) << " where the mesh as it is gives " << cost);
+    HINT("the same mesh with its axes cycled, mirrored or its triangles in another order builds a tree of another "
+         "SAH cost: try every axis (or the longest), not a fixed one, and bin by where centroids are, not by their "
+         "order in the input");
+    CHECK(std::abs(sahCost(b.bvh) - cost) <= 0.02 * cost);
+  }
+}
+
 TEST_CASE("T3.2 build: a single primitive and an empty scene" *
           grading(2, "an empty input gives a Bvh without nodes (traversal then finds nothing); one primitive "
                      "gives a single leaf as the root")) {

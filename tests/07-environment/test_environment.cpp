@@ -719,6 +719,110 @@ TEST_CASE("T7.5 importance sampling: at the poles each sample's pdf and environm
   CHECK(offDensity == 0);
 }
 
+// The map turned about the vertical by whole pixels (its columns moved
+// round by k) or flipped upside down (its rows reversed) is the same sky
+// turned or mirrored: a direction w seen in it at the turned or mirrored w.
+Vec3 turnedByColumns(const Vec3& w, int columns, int width) {
+  const Point2 uv = uvOf(w);
+  const double u = std::fmod(double(uv.x) + double(columns) / width, 1.0);
+  const double phi = 2.0 * std::numbers::pi * u;
+  const double theta = std::atan2(std::hypot(double(w.x), double(w.z)), double(w.y));
+  return Vec3(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)), float(std::sin(theta) * std::sin(phi)));
+}
+// Whether w's (u, v) is within 1e-4 of a pixel's edge: the pdf jumps there.
+bool nearPixelEdge(const Vec3& w, int width, int height) {
+  const Point2 uv = uvOf(w);
+  const double x = double(uv.x) * width, y = double(uv.y) * height;
+  return std::abs(x - std::round(x)) < 1e-4 || std::abs(y - std::round(y)) < 1e-4;
+}
+
+TEST_CASE("T7.5 metamorphic: a map turned by whole pixels about the vertical, or flipped upside down, turns its lookup and pdf alike" *
+          grading(2, "the map is a sky: its columns wrap around (the u seam is not an edge), its rows run from the "
+                     "zenith to the nadir, and pixel centres sit half a pixel in, at both ends alike")) {
+  // The relations (docs/metamorphic.md): columns moved round by k is the sky
+  // turned by 2 pi k / W about +y, rows reversed is the sky mirrored in the
+  // horizon: lookup and environmentPdf at the turned or mirrored direction
+  // must give what they gave before. Beside them, the truth: the
+  // distribution is the map's light (ruleMismatch) and each pixel centre
+  // looks up its own pixel.
+  Random random(79);
+  constexpr int kWidth = 24, kHeight = 12, kTurn = 7;
+  Image map(kWidth, kHeight), turned(kWidth, kHeight), flipped(kWidth, kHeight);
+  for (Color& c : map.pixels) c = Color(float(random.uniform(0.1, 1.0)), float(random.uniform(0.1, 1.0)), 0.5f);
+  map.at(3, 2) = Color(40.0f);
+  map.at(kWidth - 1, 8) = Color(25.0f);  // at the seam
+  for (int j = 0; j < kHeight; ++j)
+    for (int i = 0; i < kWidth; ++i) {
+      turned.at((i + kTurn) % kWidth, j) = map.at(i, j);
+      flipped.at(i, kHeight - 1 - j) = map.at(i, j);
+    }
+  const EnvironmentDistribution d = candidate::buildEnvironmentDistribution(map);
+  HINT("the relations below compare your answers with themselves, so they must first be right: the distribution "
+       "must be the map's light, luminance x sin(theta) per pixel");
+  REQUIRE(ruleMismatch(map, d).empty());
+  int centresWrong = 0;
+  for (int j = 0; j < kHeight; ++j)
+    for (int i = 0; i < kWidth; ++i) {
+      const Color got = candidate::lookupEnvironment(map, directionAt(Point2((i + 0.5f) / kWidth, (j + 0.5f) / kHeight)));
+      if (!near(Vec3(got), Vec3(map.at(i, j)), 1e-4f * maxComponent(map.at(i, j)))) ++centresWrong;
+    }
+  INFO(centresWrong << " pixel centres do not look up their own pixel");
+  HINT("the relations below compare your answers with themselves, so they must first be right: at a pixel's "
+       "centre the lookup is that pixel's value");
+  REQUIRE(centresWrong == 0);
+  std::vector<Vec3> directions, turnedDirections, flippedDirections;
+  for (int n = 0; n < 3000; ++n) {
+    Vec3 w(random.unitVector());
+    if (n % 3 == 0) w = directionAt(Point2(float(random.uniform(0.97, 1.0)), float(random.uniform())));  // by the seam
+    if (nearPixelEdge(w, kWidth, kHeight)) continue;
+    directions.push_back(w);
+    turnedDirections.push_back(turnedByColumns(w, kTurn, kWidth));
+    flippedDirections.push_back(Vec3(w.x, -w.y, w.z));
+  }
+  const std::vector<float> pdfs = candidate::environmentPdf(d, directions);
+  const std::vector<float> turnedPdfs =
+      candidate::environmentPdf(candidate::buildEnvironmentDistribution(turned), turnedDirections);
+  const std::vector<float> flippedPdfs =
+      candidate::environmentPdf(candidate::buildEnvironmentDistribution(flipped), flippedDirections);
+  int lookupTurned = 0, lookupFlipped = 0, pdfTurned = 0, pdfFlipped = 0;
+  for (size_t k = 0; k < directions.size(); ++k) {
+    const Color before = candidate::lookupEnvironment(map, directions[k]);
+    const float slack = 1e-4f * maxComponent(before) + 1e-6f;
+    if (!near(Vec3(candidate::lookupEnvironment(turned, turnedDirections[k])), Vec3(before), slack)) ++lookupTurned;
+    if (!near(Vec3(candidate::lookupEnvironment(flipped, flippedDirections[k])), Vec3(before), slack)) ++lookupFlipped;
+    // The moved map's CDFs are summed in another order: each probability, a
+    // difference of two float CDF entries, may move by the summation's
+    // rounding (8 (n + 1) u of the whole, as in ruleMismatch), relative to itself.
+    const Point2 uv = uvOf(directions[k]);
+    const int i = std::clamp(int(uv.x * kWidth), 0, kWidth - 1), j = std::clamp(int(uv.y * kHeight), 0, kHeight - 1);
+    const double row = double(d.marginalCdf[size_t(j) + 1]) - double(d.marginalCdf[size_t(j)]);
+    const float* cdf = &d.conditionalCdf[size_t(j) * size_t(kWidth + 1)];
+    const double column = double(cdf[i + 1]) - double(cdf[i]);
+    const double rounding = 8.0 * 0x1p-24 * ((kHeight + 1) / row + (kWidth + 1) / column);
+    // And v, a float, holds theta near the south pole only to its spacing
+    // near 1 (1.2e-7 of pi), as sin(pi v) does with float pi: relative to
+    // the angle from the nearer pole.
+    const double fromPole = std::min(double(uv.y), 1.0 - double(uv.y)) * std::numbers::pi;
+    const double tolerance = (1e-4 + rounding + 1e-6 / fromPole) * double(pdfs[k]);
+    if (!(std::abs(double(turnedPdfs[k]) - double(pdfs[k])) <= tolerance)) ++pdfTurned;
+    if (!(std::abs(double(flippedPdfs[k]) - double(pdfs[k])) <= tolerance)) ++pdfFlipped;
+  }
+  INFO(directions.size() << " directions; lookups that change with the map turned by " << kTurn << " columns: "
+                         << lookupTurned << ", flipped: " << lookupFlipped << "; pdfs that change, turned: " << pdfTurned
+                         << ", flipped: " << pdfFlipped);
+  HINT("the lookup changes when the map is turned by whole columns (and the direction with it): the u seam must "
+       "wrap (column W - 1 blends into column 0), not clamp");
+  CHECK(lookupTurned == 0);
+  HINT("the lookup changes when the map is flipped upside down (and the direction with it): pixel centres sit at "
+       "(j + 0.5) / H, half a pixel in at both poles; a lookup without the half-pixel offset is not symmetric");
+  CHECK(lookupFlipped == 0);
+  HINT("environmentPdf changes when the map is turned by whole columns or flipped upside down: the pdf must be the "
+       "density of the pixel that contains the direction, P(row) P(column | row) W H / (2 pi^2 sin(theta)), with "
+       "sin(theta) at the direction's own theta (alike at both poles)");
+  CHECK(pdfTurned == 0);
+  CHECK(pdfFlipped == 0);
+}
+
 // ---------------------------------------------------------------- images
 
 namespace {
