@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "check.h"
+#include "metamorphic.h"
 #include "image_scenes.h"
 #include "image_test.h"
 #include "grading.h"
@@ -423,6 +424,49 @@ Scene asymmetricScene() {
 }
 
 }  // namespace
+
+TEST_CASE("T1.3 metamorphic: the camera moved, turned, resized or mirrored with its scene gives the moved rays" *
+          grading(1, "a camera's rays depend on its own frame alone: nothing in them may assume the world's y is up, "
+                     "the origin is near, or the scene has a size")) {
+  // The relations (docs/metamorphic.md): a camera moved, turned and resized
+  // gives each raster point the ray moved and turned alike (the origin
+  // scaled and moved, the direction turned); a camera mirrored in x is a
+  // left-handed view of the mirrored world, so raster x = W - x gives the
+  // mirrored ray. Beside them, the truth: the unmoved rays (checkRay).
+  const IVec2 resolution(64, 48);
+  const std::vector<Point2> rasters = {{0.5f, 0.5f}, {63.5f, 0.5f}, {10.25f, 40.75f}, {32.0f, 24.0f}, {60.0f, 5.0f}};
+  const std::vector<Similarity> relations = {
+      {"1000 times smaller", 1e-3},
+      {"turned and 1000 times larger", 1e3, rotationAbout({1, -2, 0.5}, 133)},
+      {"turned and moved 1000 units away", 1.0, rotationAbout({0, 0, 1}, 90), {1e3, -400, 250}},
+      {"mirrored in x", 1.0, mirrorX()}};
+  for (const Camera& camera : someCameras()) {
+    for (const Point2& raster : rasters) checkRay(camera, raster, resolution);
+    const CameraBasis basis = candidate::cameraBasis(camera);
+    for (const Similarity& t : relations) {
+      Scene moved;
+      moved.camera = camera;
+      moved = transformed(moved, t);
+      const CameraBasis movedBasis = candidate::cameraBasis(moved.camera);
+      int differing = 0;
+      for (const Point2& raster : rasters) {
+        const Ray ray = candidate::generateCameraRay(camera, basis, raster, resolution);
+        const Point2 seen = t.mirrors() ? Point2(float(resolution.x) - raster.x, raster.y) : raster;
+        const Ray after = candidate::generateCameraRay(moved.camera, movedBasis, seen, resolution);
+        const Ray expected = t.ray(ray);
+        const float origin = 1e-6f * glm::length(expected.origin) + 1e-7f * float(t.scale);
+        if (!near(after.origin, expected.origin, origin) || !near(after.direction, expected.direction, 2e-5f)) ++differing;
+      }
+      CAPTURE(t.name);
+      INFO("camera at " << str(camera.position) << ": " << differing << " of " << rasters.size()
+                        << " rays are not the moved rays");
+      HINT("the rays change when the camera and its world are moved, turned, resized or mirrored together: the frame "
+           "must come from lookAt - position and camera.up alone (right = forward x up), never from the world's axes, "
+           "and the ray starts at camera.position whatever its size");
+      CHECK(differing == 0);
+    }
+  }
+}
 
 TEST_CASE("T1.3 image: a wide, rolled view of an asymmetric scene matches the reference" *
           grading(3, "compare your picture with the reference (files named above): upside down means raster y is not "

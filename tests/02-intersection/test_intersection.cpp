@@ -19,6 +19,7 @@
 #include "image_test.h"
 #include "grading.h"
 #include "meshes.h"
+#include "metamorphic.h"
 #include "scenes.h"
 #include "scene/scene_io.h"
 #include "calls.h"
@@ -545,6 +546,92 @@ TEST_CASE("T2.1 triangle: hits and misses are exact at scales 1e-3..1e5 and far 
   HINT("this counts the random triangles the test used and does not depend on your code: if it fails, report "
        "it to the course staff");
   CHECK(checked > 2000);
+}
+
+TEST_CASE("T2.1 metamorphic: triangles 2^20 times smaller or larger, mirrored, turned and moved give the same hits" *
+          grading(1, "a hit depends on the triangle's shape alone: t scales with the scene, the barycentrics do not "
+                     "move (a mirror, which re-winds the triangle, swaps b1 and b2); no epsilon in absolute units")) {
+  // The relations (docs/metamorphic.md): scaling by a power of two is exact
+  // in float, and so is mirroring x; both must give the same hits exactly
+  // (t times the scale, the barycentrics kept, b1 and b2 swapped by the
+  // mirror's re-winding). Turned and moved 1000 units away the floats round
+  // differently: the same hits clear of the edges, t and barycentrics
+  // within 2e-3. Beside them, the truth: the unmoved hits are the judge's
+  // double-precision crossings (planeHit) away from the edges.
+  Random random(27);
+  std::vector<calls::IntersectTriangle::Args> base;
+  std::vector<bool> clearOfEdges;
+  for (int i = 0; i < 3000; ++i) {
+    const DVec3 a(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+    const DVec3 b = a + DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+    const DVec3 c = a + DVec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+    const double w1 = random.uniform(-0.3, 1.0), w2 = random.uniform(-0.3, 1.0);
+    const DVec3 target = a + w1 * (b - a) + w2 * (c - a);
+    const DVec3 origin = target + 3.0 * DVec3(random.unitVector());
+    const Ray ray = rayTowards(origin, target);
+    const PlaneHit truth = planeHit(ray, Point3(a), Point3(b), Point3(c));
+    const double least = std::min({1.0 - truth.b1 - truth.b2, truth.b1, truth.b2});
+    const double facing = std::abs(glm::dot(glm::normalize(glm::cross(b - a, c - a)), DVec3(ray.direction)));
+    clearOfEdges.push_back(std::abs(least) > 1e-2 && std::abs(truth.t) > 1e-2 && facing > 0.05);  // not grazing
+    base.emplace_back(ray, kAll, Point3(a), Point3(b), Point3(c));
+  }
+  const std::vector<std::optional<TriangleHit>> before = candidate::intersectTriangles(base);
+  int wrong = 0;
+  for (size_t k = 0; k < base.size(); ++k) {
+    if (!clearOfEdges[k]) continue;
+    const auto& [ray, range, p0, p1, p2] = base[k];
+    const PlaneHit truth = planeHit(ray, p0, p1, p2);
+    const bool inside = std::min({1.0 - truth.b1 - truth.b2, truth.b1, truth.b2}) > 0.0 && truth.t > 0.0;
+    if (inside != before[k].has_value()) ++wrong;
+    else if (inside && !(std::abs(double(before[k]->t) - truth.t) <= 1e-4 * truth.t)) ++wrong;
+  }
+  INFO(wrong << " of the unmoved rays clear of the edges hit where the judge's crossing says they do not, or at "
+             << "another t");
+  HINT("the relations below compare your hits with themselves, so they must first be right: a ray hits exactly "
+       "when it crosses the triangle, at the t of the crossing");
+  REQUIRE(wrong == 0);
+  struct Relation {
+    Similarity t;
+    bool exact;
+  };
+  const std::vector<Relation> relations = {{{"2^20 times smaller", 0x1p-20}, true},
+                                           {{"2^20 times larger", 0x1p20}, true},
+                                           {{"mirrored in x", 1.0, mirrorX()}, true},
+                                           {{"turned and moved 1000 units away", 1.0, rotationAbout({2, 1, -1}, 47),
+                                             {1000, -300, 700}}, false}};
+  for (const Relation& relation : relations) {
+    const Similarity& s = relation.t;
+    std::vector<calls::IntersectTriangle::Args> moved;
+    for (const auto& [ray, range, p0, p1, p2] : base) {
+      // A mirror re-winds the triangle (p1 and p2 swapped), so that it keeps facing the mirrored ray.
+      moved.emplace_back(s.ray(ray), range, s.point(p0), s.point(s.mirrors() ? p2 : p1), s.point(s.mirrors() ? p1 : p2));
+    }
+    const std::vector<std::optional<TriangleHit>> after = candidate::intersectTriangles(moved);
+    int differing = 0;
+    for (size_t k = 0; k < base.size(); ++k) {
+      if (!relation.exact && !clearOfEdges[k]) continue;
+      if (before[k].has_value() != after[k].has_value()) {
+        ++differing;
+        continue;
+      }
+      if (!before[k]) continue;
+      const float b1 = s.mirrors() ? after[k]->b2 : after[k]->b1, b2 = s.mirrors() ? after[k]->b1 : after[k]->b2;
+      // Moved 1000 units, each corner rounds by up to 3e-5: a barycentric of a small triangle moves by 1e-3.
+      const double tolerance = relation.exact ? 1e-6 : 2e-3;
+      if (!(std::abs(double(after[k]->t) - s.scale * double(before[k]->t)) <= tolerance * s.scale * double(before[k]->t)) ||
+          !(std::abs(b1 - before[k]->b1) <= tolerance) || !(std::abs(b2 - before[k]->b2) <= tolerance)) {
+        ++differing;
+      }
+    }
+    INFO(s.name << ": " << differing << " of " << base.size() << " rays hit differently once the triangles and rays "
+                << "are moved");
+    HINT("the hits change when every triangle and ray is scaled by 2^20 or 2^-20 (exact in float), mirrored, or "
+         "turned and moved: an epsilon in absolute units (|det| < 1e-6, t > 1e-4) breaks the scale, and a hit "
+         "must not depend on the axes or the winding beyond swapping b1 and b2");
+    // Moved, a thin triangle's rounded corners can move a barycentric past
+    // 2e-3: 12 of these 3,000 on the reference and every alternate alike.
+    CHECK(differing <= (relation.exact ? 0 : int(base.size()) / 100));
+  }
 }
 
 TEST_CASE("T2.1 triangle: every triangle of a scan-sized mesh (65,024 triangles ~1e-3 across) is hit" *

@@ -17,6 +17,7 @@
 
 #include "calls.h"
 #include "check.h"
+#include "metamorphic.h"
 #include "grading.h"
 #include "image_scenes.h"
 #include "image_test.h"
@@ -498,6 +499,74 @@ Scene lensScene(float focalDistance, Vec3 up) {
 }
 
 }  // namespace
+
+TEST_CASE("T10.2 metamorphic: a lens moved, turned and resized with its scene gives the moved rays" *
+          grading(1, "the lens lies in the camera's own frame (basis.right, basis.up), its radius and the focal "
+                     "distance are lengths of the scene: nothing may be fixed in the world's axes or units")) {
+  // The relations (docs/metamorphic.md): a camera moved, turned and
+  // resized with its aperture and focal distance gives each pinhole ray and
+  // lens sample the ray moved and turned alike. Beside them, the truth:
+  // every ray from one film point meets the pinhole ray in the plane of
+  // focus (T10.2's focus test, here on the unmoved lens).
+  const std::vector<Similarity> relations = {
+      {"1000 times smaller", 1e-3},
+      {"turned and 1000 times larger", 1e3, rotationAbout({1, -2, 0.5}, 133)},
+      {"turned and moved 1000 units away", 1.0, rotationAbout({0, 0, 1}, 90), {1e3, -400, 250}}};
+  int index = 0;
+  for (const Camera& camera : someLenses()) {
+    const LensFrame f = lensFrameOf(camera);
+    std::vector<calls::LensQuery> queries;
+    for (const Vec2& u : uniformPoints(200, 260 + uint64_t(index++))) {
+      queries.emplace_back(pinholeThrough(camera, f, {double(u.x) - 0.5, 0.3 * (double(u.y) - 0.5)}), u);
+    }
+    const std::vector<Ray> rays = candidate::generateThinLensRays(camera, basisOf(f), queries);
+    HINT("a guard of the test itself: one ray comes back for each query");
+    REQUIRE(rays.size() == queries.size());
+    int unfocused = 0;
+    double widest = 0.0;
+    for (size_t k = 0; k < rays.size(); ++k) {
+      const Ray& pinhole = std::get<0>(queries[k]);
+      const AtDepth lens = atDepth(rays[k], camera, f, camera.focalDistance);
+      const AtDepth hole = atDepth(pinhole, camera, f, camera.focalDistance);
+      if (!(lens.t > 0.0) || glm::length(lens.point - hole.point) > 1e-4 * camera.focalDistance) ++unfocused;
+      widest = std::max(widest, glm::length(DVec3(rays[k].origin) - DVec3(camera.position)) / camera.apertureRadius);
+    }
+    INFO(unfocused << " of " << rays.size() << " rays miss their pinhole ray's point in the plane of focus; the "
+                   << "farthest origin is " << widest << " lens radii from the lens's centre");
+    HINT("the relations below compare your rays with themselves, so they must first be right: rays start across "
+         "the whole lens (up to its radius from camera.position) and every ray from one film point passes through "
+         "the pinhole ray's point in the plane of focus");
+    REQUIRE(unfocused == 0);
+    REQUIRE(widest > 0.9);
+    REQUIRE(widest <= 1.0 + 1e-4);
+    for (const Similarity& t : relations) {
+      Scene moved;
+      moved.camera = camera;
+      moved = transformed(moved, t);
+      std::vector<calls::LensQuery> movedQueries;
+      for (const auto& [pinhole, u] : queries) movedQueries.emplace_back(t.ray(pinhole), u);
+      const std::vector<Ray> after =
+          candidate::generateThinLensRays(moved.camera, basisOf(lensFrameOf(moved.camera)), movedQueries);
+      HINT("a guard of the test itself: one ray comes back for each query");
+      REQUIRE(after.size() == rays.size());
+      int differing = 0;
+      for (size_t k = 0; k < rays.size(); ++k) {
+        const Ray expected = t.ray(rays[k]);
+        const float origin = 1e-5f * float(t.scale) + 1e-6f * glm::length(expected.origin);
+        if (!near(after[k].origin, expected.origin, origin) || !near(after[k].direction, expected.direction, 2e-4f)) {
+          ++differing;
+        }
+      }
+      CAPTURE(t.name);
+      INFO("lens at " << str(camera.position) << ": " << differing << " of " << rays.size()
+                      << " rays are not the moved rays");
+      HINT("the rays change when the lens and its world are moved, turned or resized together: put the lens point "
+           "at camera.position + apertureRadius (x basis.right + y basis.up), aim at the pinhole ray's point at "
+           "focalDistance along basis.forward; nothing in the world's axes or in fixed units");
+      CHECK(differing == 0);
+    }
+  }
+}
 
 TEST_CASE("T10.2 image: focused on the middle sphere, the near sphere and the far stripes blur" *
           grading(3, "compare your picture with the reference (files named above): sharp everywhere means the lens "

@@ -36,7 +36,8 @@ struct Similarity {
   DVec3 offset{0.0};
 
   Point3 point(const Point3& p) const { return Point3(scale * (rotation * DVec3(p)) + offset); }
-  Vec3 direction(const Vec3& d) const { return Vec3(glm::normalize(rotation * DVec3(d))); }
+  // (Not normalised again: R keeps lengths, and a mirror or the identity stays exact.)
+  Vec3 direction(const Vec3& d) const { return Vec3(rotation * DVec3(d)); }
   bool mirrors() const { return glm::determinant(rotation) < 0.0; }
   Ray ray(const Ray& r) const { return Ray{point(r.origin), direction(r.direction)}; }
 };
