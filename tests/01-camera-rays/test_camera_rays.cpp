@@ -441,6 +441,8 @@ TEST_CASE("T1.3 metamorphic: the camera moved, turned, resized or mirrored with 
       {"turned and moved 1000 units away", 1.0, rotationAbout({0, 0, 1}, 90), {1e3, -400, 250}},
       {"mirrored in x", 1.0, mirrorX()}};
   for (const Camera& camera : someCameras()) {
+    HINT("the relations below compare your rays with themselves, so they must first be right: each raster "
+         "point's ray from camera.position through the image plane at distance 1");
     for (const Point2& raster : rasters) checkRay(camera, raster, resolution);
     const CameraBasis basis = candidate::cameraBasis(camera);
     for (const Similarity& t : relations) {
