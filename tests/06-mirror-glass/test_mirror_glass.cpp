@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "check.h"
+#include "metamorphic.h"
 #include "image_scenes.h"
 #include "image_test.h"
 #include "grading.h"
@@ -345,6 +346,64 @@ TEST_CASE("T6.5 glass: reflection is chosen with the Fresnel probability (chi-sq
        "some u must refract (1 - F is about 20 % there): an F of 1 or more (Schlick fed wo.z, negative inside, "
        "when leaving), or a TIR test that fires early, fails here");
   CHECK(refractions > 0);
+}
+
+TEST_CASE("T6.5 metamorphic: mirror and glass turned about the normal, or mirrored across it, turn their directions alike" *
+          grading(1, "reflection and refraction see the normal (+z) and the angle to it, nothing else: no tangent axis "
+                     "is special, and the lobe chosen for a u depends on cos(theta) alone")) {
+  // The relations (docs/metamorphic.md): wo turned about +z by any angle, or
+  // mirrored in x, gives reflect, refract and each sampleGlass draw (the
+  // same u) turned or mirrored alike, with the same f and pdf. Beside them,
+  // the truths: reflect(wo) = (-wo.x, -wo.y, wo.z), and refract obeys Snell.
+  Random random(66);
+  std::vector<Vec3> wos;
+  for (int i = 0; i < 400; ++i) wos.push_back(randomDirection(random, i % 2 == 0));
+  int untrue = 0;
+  for (const Vec3& wo : wos) {
+    if (!near(candidate::reflect(wo), Vec3(-wo.x, -wo.y, wo.z), 1e-6f)) ++untrue;
+    const std::optional<Vec3> wi = candidate::refract(wo, 1.5f);
+    const double nO = wo.z > 0 ? 1.0 : 1.5, nT = wo.z > 0 ? 1.5 : 1.0;
+    if (wi && !(std::abs(nO * sinTheta(wo) - nT * sinTheta(*wi)) <= 1e-4)) ++untrue;
+    if (!wi && wo.z > 0) ++untrue;
+  }
+  INFO(untrue << " of " << wos.size() << " directions reflect or refract wrongly");
+  HINT("the relations below compare your directions with themselves, so they must first be right: reflect(wo) = "
+       "(-wo.x, -wo.y, wo.z), and refract obeys Snell's law (always a ray when entering)");
+  REQUIRE(untrue == 0);
+  for (const Similarity& s : {Similarity{"turned 73 degrees about the normal", 1.0, rotationAbout({0, 0, 1}, 73)},
+                              Similarity{"turned 200 degrees about the normal", 1.0, rotationAbout({0, 0, 1}, 200)},
+                              Similarity{"mirrored in x", 1.0, mirrorX()}}) {
+    int differing = 0;
+    std::vector<calls::SampleGlass::Args> before, after;
+    for (const Vec3& wo : wos) {
+      if (!near(candidate::reflect(s.direction(wo)), s.direction(candidate::reflect(wo)), 1e-5f)) ++differing;
+      const std::optional<Vec3> wi = candidate::refract(wo, 1.5f), turned = candidate::refract(s.direction(wo), 1.5f);
+      const bool nearCritical = std::abs(sinTheta(wo) * 1.5 - 1.0) < 1e-4;
+      if (!nearCritical && (wi.has_value() != turned.has_value() || (wi && !near(*turned, s.direction(*wi), 1e-5f)))) {
+        ++differing;
+      }
+      const float u = float(random.uniform());
+      before.emplace_back(wo, Color(0.9f), Color(0.8f), 1.5f, u);
+      after.emplace_back(s.direction(wo), Color(0.9f), Color(0.8f), 1.5f, u);
+    }
+    const std::vector<BsdfSample> drawn = candidate::sampleGlass(before), drawnTurned = candidate::sampleGlass(after);
+    for (size_t k = 0; k < drawn.size(); ++k) {
+      const BsdfSample &a = drawn[k], &b = drawnTurned[k];
+      // A u this close to the lobes' boundary (F, or 1 - F, whichever end the
+      // convention takes) may fall either way once cos(theta) rounds anew.
+      const float u = std::get<4>(before[k]), F = a.wi.z * std::get<0>(before[k]).z > 0.0f ? a.pdf : 1.0f - a.pdf;
+      if (std::min(std::abs(u - F), std::abs(u - (1.0f - F))) < 1e-4f && a.wi.z * b.wi.z < 0.0f) continue;
+      if (!near(b.wi, s.direction(a.wi), 1e-5f) || !near(Vec3(b.f), Vec3(a.f), 1e-5f * maxComponent(a.f) + 1e-7f) ||
+          !(std::abs(b.pdf - a.pdf) <= 1e-5f * a.pdf)) {
+        ++differing;
+      }
+    }
+    CAPTURE(s.name);
+    INFO(differing << " of " << 3 * wos.size() << " answers are not the turned or mirrored ones");
+    HINT("reflect, refract or sampleGlass change when wo is turned about the normal or mirrored across it: only "
+         "wo.z (cos theta) and the tangent part's direction may matter, flipped as a whole, never one tangent axis");
+    CHECK(differing == 0);
+  }
 }
 
 TEST_CASE("T6.5 furnace: a perfect mirror and lossless glass vanish in a uniform environment" *
