@@ -20,6 +20,7 @@
 
 #include "calls.h"
 #include "check.h"
+#include "metamorphic.h"
 #include "grading.h"
 #include "image_scenes.h"
 #include "image_test.h"
@@ -627,6 +628,54 @@ TEST_CASE("T9.3 path tracer: inside a closed emitting enclosure every estimator 
     CHECK(agreed.back().second);
   }
   hintByEstimators(agreed);
+}
+
+TEST_CASE("T9.3 metamorphic: the Cornell box 1024 times larger gives the same paths, by every estimator" *
+          grading(1, "nothing in a path, its light sample, its densities or its weights may depend on the scene's "
+                     "size: densities per solid angle carry r^2 / cos, which scales away; no epsilon in fixed units")) {
+  // The relation (docs/metamorphic.md): 1024 times larger every float is
+  // scaled exactly, task 4's offsets too; the solid-angle densities and so
+  // the weights do not change, so each path from the same random numbers
+  // carries the same radiance. Beside it, the truth: inside a closed
+  // enclosure the power heuristic gives Le / (1 - rho).
+  {
+    const Rig rig(closedEnclosure(0.5f, 0.5f));
+    TraceContext context = rig.context(100, 1);
+    Random random(99);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 4000; ++i) rays.push_back(Ray{Point3(0.1f, -0.2f, 0.05f), Vec3(random.unitVector())});
+    const MeanEstimate m = misMean(context, MisEstimator::Power, rays, 99);
+    INFO("inside the enclosure: " << m.describe(1.0));
+    HINT("the relation below compares your paths with themselves, so they must first be right: inside a closed "
+         "enclosure of albedo 1/2 and emission 1/2 the power heuristic gives Le / (1 - rho) = 1");
+    REQUIRE(m.agrees(1.0));
+  }
+  const Scene box = cornellBox(16, 16, 1, 4, false);
+  Random random(100);
+  std::vector<Ray> rays;
+  for (int i = 0; i < 300; ++i) {
+    const DVec3 target(random.uniform(-0.9, 0.9), random.uniform(0.05, 1.45), random.uniform(-0.9, 0.5));
+    rays.push_back(Ray{box.camera.position, Vec3(glm::normalize(target - DVec3(box.camera.position)))});
+  }
+  constexpr int kPerRay = 10;
+  auto paths = [&](const Scene& scene, const Similarity& s, MisEstimator e) {
+    Rig rig(transformed(scene, s));
+    TraceContext context = rig.context(4, 1);
+    std::vector<calls::PathQuery> queries;
+    for (size_t r = 0; r < rays.size(); ++r)
+      for (int i = 0; i < kPerRay; ++i) queries.emplace_back(s.ray(rays[r]), uint32_t(r * kPerRay + i), testSeed(101));
+    std::vector<double> values;
+    for (const Color& L : candidate::tracePathsMis(context, e, queries)) values.push_back((L.x + L.y + L.z) / 3.0);
+    return values;
+  };
+  for (MisEstimator e : kAllEstimators) {
+    const std::string larger = brokenPairs(paths(box, {"as it is"}, e), kPerRay, paths(box, {"larger", 1024.0}, e));
+    CAPTURE(nameOf(e));
+    INFO("the box 1024 times larger: " << larger);
+    HINT("the paths change when the whole box is 1024 times larger (every coordinate scaled exactly): a density "
+         "per unit area where one per solid angle belongs, or an epsilon in fixed units, does not scale away");
+    CHECK(larger.empty());
+  }
 }
 
 TEST_CASE("T9.3 path tracer: after several bounces MIS agrees with light sampling alone (the light seen through glossy walls)" *
