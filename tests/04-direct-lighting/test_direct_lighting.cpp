@@ -673,6 +673,7 @@ Scene shadowedScene() {
   scene.pointLights.push_back(PointLight{{-1.5f, 1.5f, -1.0f}, Color(1.0f)});
   return scene;
 }
+constexpr size_t kLightMesh = 2;  // shadowedScene's area light
 // In the open, in the bar's penumbra, in the shade's shadow, beside it.
 const std::vector<Point3> kShadowedPoints = {
     {0.8f, 0, 0.2f}, {0.05f, 0, 0.1f}, {0.3f, 0, -0.5f}, {1.5f, 0, 0.5f}, {1.5f, 0, -0.6f}, {-1.2f, 0, 0.7f}};
@@ -697,7 +698,7 @@ std::vector<double> pairedEstimates(const Scene& scene, const Similarity& t, con
 
 }  // namespace
 
-TEST_CASE("T4.4 metamorphic: the same estimates with the scene 1000 times smaller, 2000 times larger, turned, mirrored, moved 50,000 away and reordered" *
+TEST_CASE("T4.4 metamorphic: the same estimates with the scene 1000 times smaller, 2000 times larger, turned, mirrored, moved 50,000 away, reordered, its light far or split" *
           grading(3, "nothing in direct lighting may depend on the scene's size, place, orientation or order: shorten "
                      "shadow rays by a fraction of their length, never a fixed distance; take cosines from the normals "
                      "given, never from an axis")) {
@@ -755,6 +756,46 @@ TEST_CASE("T4.4 metamorphic: the same estimates with the scene 1000 times smalle
   HINT("the estimates change when the meshes and point lights come in another order: a light skipped or counted "
        "by its index, or the first hit taken for the closest, fails here");
   CHECK(reorderedBroken.empty());
+  // The area light 2000 times larger and 2000 times farther from point 0
+  // (scaled about it) fills the same solid angle with the same radiance: the
+  // same estimates there, from the same random numbers (a light sample is
+  // the scaled point). Its shadow rays are 4000 long, where float spacing is
+  // 2.4e-4: a ray shortened by 1e-4 reaches the light itself.
+  {
+    Scene farther = scene;
+    const DVec3 at(kShadowedPoints[0]);
+    for (Point3& q : farther.meshes[kLightMesh].positions) q = Point3(at + 2000.0 * (DVec3(q) - at));
+    const std::vector<Point3> open = {kShadowedPoints[0]};
+    const std::vector<double> here(base.begin(), base.begin() + kPaired);
+    const std::string fartherBroken = brokenPairs(here, kPaired, pairedEstimates(farther, {"as it is"}, open));
+    INFO("the area light 2000 times larger and farther: " << fartherBroken);
+    HINT("the estimate changes when the area light is 2000 times larger and 2000 times farther (the same solid "
+         "angle, the same radiance): a shadow ray shortened by a fixed length reaches the light itself 4000 units "
+         "away; shorten it by a fraction of its length");
+    CHECK(fartherBroken.empty());
+  }
+  // The area light cut into two halves of the same radiance: the same light,
+  // sampled as two (other random numbers, so the means are compared).
+  {
+    Scene split = scene;
+    const TriangleMesh light = split.meshes[kLightMesh];
+    const Point3 corner = light.positions[0], u = light.positions[1] - corner, v = light.positions[3] - corner;
+    split.meshes.erase(split.meshes.begin() + kLightMesh);
+    addQuad(split, corner, 0.5f * u, v, light.material);
+    addQuad(split, corner + 0.5f * u, 0.5f * u, v, light.material);
+    const std::vector<double> halves = pairedEstimates(split, {"as it is"}, kShadowedPoints);
+    std::vector<MeanEstimate> after(kShadowedPoints.size());
+    for (size_t k = 0; k < halves.size(); ++k) after[k / kPaired].add(halves[k]);
+    for (MeanEstimate& m : after) limitNoise(m, "04-direct-lighting");
+    for (size_t i = 0; i < before.size(); ++i) {
+      CAPTURE(i);
+      INFO("as it is: " << before[i].describe(before[i].mean()) << "; split: " << after[i].describe(before[i].mean()));
+      HINT("the mean changes when the area light is cut into two halves of the same radiance: each light's samples "
+           "must be averaged over settings.lightSamples and divided by their own pdf (the sample's pdfArea, 1 / its "
+           "own area), never by a count or an area of all lights together");
+      CHECK(sameEstimate(before[i], after[i]));
+    }
+  }
   // A mirror re-winds every triangle, which moves each light sample: the
   // same mean, from other random numbers. Within 5 standard errors, each at
   // most the reference's (limitNoise): a correct estimator fails 1 run in
