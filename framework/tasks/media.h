@@ -55,7 +55,8 @@ struct ScatteringVertex {
 // medium as the ray crosses it; past one, the walk goes on from an origin
 // offset beyond it, for the rest of the way), 0 at any other surface. Any estimator whose
 // expected value is that fraction will do; the sampler is there for one that
-// needs random numbers.
+// needs random numbers; it draws them from nothing else (the same sampler
+// gives the same answer: the suite compares a scene with its scaled copy).
 float transmittance(TraceContext& context, Ray ray, float distance, MediumIndex medium, Sampler& sampler);
 
 // T12.3: task 4's estimateDirectLighting at a vertex in `medium` (a surface

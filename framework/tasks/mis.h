@@ -65,6 +65,8 @@ struct MisWeights {
 // T9.3: task 5's path tracer with one light sample per vertex (T9.2) and the
 // BSDF sample's emission both kept, each weighted by `weights`; point lights
 // and delta lobes (mirror, glass) as in tasks 4 to 6, with weight 1.
+// Every random number comes from `sampler`, in any order: the same sampler
+// gives the same path (as task 5's).
 Color tracePathMis(TraceContext& context, Ray ray, Sampler& sampler, const MisWeights& weights);
 
 }  // namespace pathlab

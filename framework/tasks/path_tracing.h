@@ -16,6 +16,9 @@ float diffuseDirectionPdf(const Vec3& wi);
 
 // T5.2: the radiance arriving along `ray` (a camera ray): emission, direct
 // lighting at every vertex, bounces up to context.settings.maxDepth.
+// Every random number comes from `sampler`, in any order: the same sampler
+// gives the same path (the suite compares a scene with its copy 1024 times
+// larger under the same random numbers).
 Color tracePath(TraceContext& context, Ray ray, Sampler& sampler);
 
 }  // namespace pathlab
