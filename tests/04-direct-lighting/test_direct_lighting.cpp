@@ -698,7 +698,7 @@ std::vector<double> pairedEstimates(const Scene& scene, const Similarity& t, con
 
 }  // namespace
 
-TEST_CASE("T4.4 metamorphic: the same estimates with the scene 1000 times smaller, 2000 times larger, turned, mirrored, moved 50,000 away, reordered, its light far or split" *
+TEST_CASE("T4.4 metamorphic: the same estimates with the scene 1000 times smaller, 2000 times larger, turned, mirrored, moved 50,000 away, reordered, its lights far or split" *
           grading(3, "nothing in direct lighting may depend on the scene's size, place, orientation or order: shorten "
                      "shadow rays by a fraction of their length, never a fixed distance; take cosines from the normals "
                      "given, never from an axis")) {
@@ -756,22 +756,29 @@ TEST_CASE("T4.4 metamorphic: the same estimates with the scene 1000 times smalle
   HINT("the estimates change when the meshes and point lights come in another order: a light skipped or counted "
        "by its index, or the first hit taken for the closest, fails here");
   CHECK(reorderedBroken.empty());
-  // The area light 2000 times larger and 2000 times farther from point 0
-  // (scaled about it) fills the same solid angle with the same radiance: the
-  // same estimates there, from the same random numbers (a light sample is
-  // the scaled point). Its shadow rays are 4000 long, where float spacing is
-  // 2.4e-4: a ray shortened by 1e-4 reaches the light itself.
+  // Every light 2000 times farther from point 0 (scaled about it), its power
+  // 2000^2 times larger: the area light, 2000 times larger, fills the same
+  // solid angle with the same radiance; each point light's intensity grows
+  // with the square of its distance. The same estimates there, from the same
+  // random numbers (a light sample is the scaled point). The shadow rays are
+  // 4000 long, where float spacing is 2.4e-4: a ray shortened by 1e-4
+  // reaches the light itself.
   {
     Scene farther = scene;
     const DVec3 at(kShadowedPoints[0]);
     for (Point3& q : farther.meshes[kLightMesh].positions) q = Point3(at + 2000.0 * (DVec3(q) - at));
+    for (PointLight& light : farther.pointLights) {
+      light.position = Point3(at + 2000.0 * (DVec3(light.position) - at));
+      light.intensity *= 2000.0f * 2000.0f;
+    }
     const std::vector<Point3> open = {kShadowedPoints[0]};
     const std::vector<double> here(base.begin(), base.begin() + kPaired);
     const std::string fartherBroken = brokenPairs(here, kPaired, pairedEstimates(farther, {"as it is"}, open));
-    INFO("the area light 2000 times larger and farther: " << fartherBroken);
-    HINT("the estimate changes when the area light is 2000 times larger and 2000 times farther (the same solid "
-         "angle, the same radiance): a shadow ray shortened by a fixed length reaches the light itself 4000 units "
-         "away; shorten it by a fraction of its length");
+    INFO("every light 2000 times farther, its power 2000^2 times larger: " << fartherBroken);
+    HINT("the estimate changes when every light is 2000 times farther with its power 2000^2 times larger (the "
+         "area light 2000 times larger: the same solid angle, the same radiance; each point light's intensity "
+         "times the square of its distance): a shadow ray shortened by a fixed length reaches the light itself "
+         "4000 units away; shorten it by a fraction of its length");
     CHECK(fartherBroken.empty());
   }
   // The area light cut into two halves of the same radiance: the same light,

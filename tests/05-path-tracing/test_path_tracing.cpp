@@ -276,13 +276,7 @@ namespace {
 // the channels) per path.
 std::vector<double> pairedPaths(const Scene& scene, const Similarity& t, const std::vector<Ray>& rays, int perRay) {
   Rig rig(transformed(scene, t));
-  TraceContext context = rig.context(5, 1);
-  std::vector<calls::PathQuery> queries;
-  for (size_t r = 0; r < rays.size(); ++r)
-    for (int i = 0; i < perRay; ++i) queries.emplace_back(t.ray(rays[r]), uint32_t(r * perRay + i), testSeed(58));
-  std::vector<double> values;
-  for (const Color& L : candidate::tracePaths(context, queries)) values.push_back((L.x + L.y + L.z) / 3.0);
-  return values;
+  return channelMeans(candidate::tracePaths(rig.context(5, 1), pairedPathQueries(t, rays, perRay, testSeed(58))));
 }
 
 }  // namespace
@@ -308,12 +302,7 @@ TEST_CASE("T5.2 metamorphic: the Cornell box 1024 times larger or reordered give
     REQUIRE(m.agrees(1.0));
   }
   const Scene box = cornellBox(16, 16, 1, 5, false);
-  Random random(59);
-  std::vector<Ray> rays;
-  for (int i = 0; i < 1000; ++i) {
-    const DVec3 target(random.uniform(-0.9, 0.9), random.uniform(0.05, 1.45), random.uniform(-0.9, 0.5));
-    rays.push_back(Ray{box.camera.position, Vec3(glm::normalize(target - DVec3(box.camera.position)))});
-  }
+  const std::vector<Ray> rays = raysIntoCornellBox(box, 1000, 59);
   constexpr int kPerRay = 20;
   const std::vector<double> base = pairedPaths(box, Similarity{"as it is"}, rays, kPerRay);
   const std::string larger = brokenPairs(base, kPerRay, pairedPaths(box, {"larger", 1024.0}, rays, kPerRay));

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -84,6 +85,36 @@ inline Scene transformed(const Scene& scene, const Similarity& t) {
   camera.focalDistance = float(t.scale * double(camera.focalDistance));
   out.primitives.clear();  // Rig indexes them again
   return out;
+}
+
+// Camera rays into the Cornell box's open volume (image_scenes.h's
+// cornellBox), `count` of them drawn with `seed`.
+inline std::vector<Ray> raysIntoCornellBox(const Scene& box, int count, uint64_t seed) {
+  Random random(seed);
+  std::vector<Ray> rays;
+  for (int i = 0; i < count; ++i) {
+    const DVec3 target(random.uniform(-0.9, 0.9), random.uniform(0.05, 1.45), random.uniform(-0.9, 0.5));
+    rays.push_back(Ray{box.camera.position, Vec3(glm::normalize(target - DVec3(box.camera.position)))});
+  }
+  return rays;
+}
+
+// Path queries (ray, stream, seed) for the rays under t, `perRay` random
+// streams each, the same streams whatever t is: a paired relation's input.
+inline std::vector<std::tuple<Ray, uint32_t, uint64_t>> pairedPathQueries(const Similarity& t,
+                                                                          const std::vector<Ray>& rays, int perRay,
+                                                                          uint64_t seed) {
+  std::vector<std::tuple<Ray, uint32_t, uint64_t>> queries;
+  for (size_t r = 0; r < rays.size(); ++r)
+    for (int i = 0; i < perRay; ++i) queries.emplace_back(t.ray(rays[r]), uint32_t(r * perRay + i), seed);
+  return queries;
+}
+
+// One value per answer, the mean of its channels.
+inline std::vector<double> channelMeans(const std::vector<Color>& answers) {
+  std::vector<double> values;
+  for (const Color& L : answers) values.push_back((double(L.x) + L.y + L.z) / 3.0);
+  return values;
 }
 
 // Paired answers: "" when `moved` gives the same answers as `base` (more
