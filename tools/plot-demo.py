@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Draws a pathlab-demo figure (JSON written by apps/demo/figure.cpp) with
+"""Draws a pathlab-demo figure (JSON written by lab/figure.cpp) with
 matplotlib: plots side by side, each with lines, histograms, scatter
 points, bars or an image. usage: plot-demo.py FIGURE.json
 Needs Debian's python3-matplotlib (run it with /usr/bin/python3)."""

@@ -39,16 +39,16 @@ Strategy strategy(const std::string& name) {
     s.options.sampler = SampleSequence::Stratified;
     s.tasks = {4, 5};
     s.change = "jittered strata instead of Owen-scrambled Sobol points (the framework's sampler, --sampler stratified)";
-  } else if (name == "light" || name == "bsdf" || name == "mis-balance" || name == "mis-power") {
-    // Task 9's tracePathMis: one light sample per vertex, the BSDF sample, or both weighted.
-    s.options.integrator = name == "light" ? Integrator::LightSampling
-                           : name == "bsdf" ? Integrator::BsdfSampling
-                           : name == "mis-balance" ? Integrator::MisBalance : Integrator::Mis;
+  } else if (const std::optional<Integrator> mis = integratorFromName(name == "mis-power" ? "mis" : name);
+             mis && misEstimatorOf(*mis)) {
+    // Task 9's tracePathMis, by the integrator's name (render.h's kIntegrators; "mis-power" is "mis"):
+    // one light sample per vertex, the BSDF sample, or both weighted.
+    s.options.integrator = *mis;
     s.tasks = {9};
-    s.change = name == "light"         ? "task 9's path tracer, one light sample per vertex alone"
-               : name == "bsdf"        ? "task 9's path tracer, the BSDF sample alone"
-               : name == "mis-balance" ? "task 9's path tracer, MIS of light and BSDF samples, balance heuristic"
-                                       : "task 9's path tracer, MIS of light and BSDF samples, power heuristic";
+    s.change = *mis == Integrator::LightSampling   ? "task 9's path tracer, one light sample per vertex alone"
+               : *mis == Integrator::BsdfSampling ? "task 9's path tracer, the BSDF sample alone"
+               : *mis == Integrator::MisBalance   ? "task 9's path tracer, MIS of light and BSDF samples, balance heuristic"
+                                                  : "task 9's path tracer, MIS of light and BSDF samples, power heuristic";
   } else if (name == "adaptive" || name.rfind("adaptive-", 0) == 0) {
     // Task 11: each pixel stops once its 95 % interval is within the
     // tolerance (adaptive-TOL; 0.2 by default: on CBspheres.dae it pays at

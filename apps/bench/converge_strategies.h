@@ -23,8 +23,10 @@ struct Strategy {
   bool framework = false;  // run by the framework's path tracer (render/strategies.h), not tracePath
 };
 
+// The strategies' names. Task 9's four are its integrators' (render.h's
+// kIntegrators: light, bsdf, mis-balance, mis), "mis-power" the same as "mis".
 inline constexpr const char* kStrategyNames[] = {"reference", "cosine", "uniform-hemisphere", "nee", "no-nee", "rr",
-                                                 "no-rr", "light", "bsdf", "mis-balance", "mis-power",
+                                                 "no-rr", "light", "bsdf", "mis-balance", "mis", "mis-power",
                                                  "env-importance", "env-uniform", "independent", "stratified",
                                                  "adaptive"};
 

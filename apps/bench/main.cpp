@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
   CLI::App* convergeCommand = app.add_subcommand(
       "converge", "Error against time for sampling strategies (those the linked task code ignores: unavailable)");
   convergeCommand->add_option("scene", converge.scene, "Scene file")->required();
-  convergeCommand->add_option("--strategies", converge.strategies, "Comma-separated: reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, light, bsdf, mis-balance, mis-power, env-importance, env-uniform, independent, stratified, adaptive (task 11, tolerance 0.2), adaptive-TOL");
+  convergeCommand->add_option("--strategies", converge.strategies, "Comma-separated: reference, cosine, uniform-hemisphere, nee, no-nee, rr, no-rr, light, bsdf, mis-balance, mis (or mis-power), env-importance, env-uniform, independent, stratified, adaptive (task 11, tolerance 0.2), adaptive-TOL");
   convergeCommand->add_option("--budget", converge.budgetSeconds, "Render seconds per strategy (default 60)")
       ->check(kFinitePositive);
   convergeCommand->add_option("--out", converge.outDir, "Output folder for the CSV and the cached reference");

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <memory>
 
-#include "../gui/background_worker.h"
-#include "../gui/shell.h"
+#include "background_worker.h"
+#include "shell.h"
 #include "figure_view.h"
 #include "parameter_sliders.h"
 

@@ -16,14 +16,15 @@
 namespace pathlab::gui {
 namespace {
 
-constexpr Integrator kIntegrators[] = {Integrator::Path,          Integrator::Direct,       Integrator::Preview,
-                                       Integrator::Normals,       Integrator::Mis,          Integrator::MisBalance,
-                                       Integrator::LightSampling, Integrator::BsdfSampling};
-constexpr const char* kIntegratorNames[] = {"path (tasks 4-8)",       "direct (task 4)",
-                                            "preview (tasks 1-3)",    "normals (tasks 1-2)",
-                                            "mis (task 9, power)",    "mis-balance (task 9)",
-                                            "light (task 9, alone)", "bsdf (task 9, alone)"};
-static_assert(std::size(kIntegrators) == std::size(kIntegratorNames));
+// The integrator menu: each of render.h's kIntegrators as "name (the tasks it runs)".
+const std::vector<std::string>& integratorMenu() {
+  static const std::vector<std::string> menu = [] {
+    std::vector<std::string> items;
+    for (const IntegratorEntry& entry : kIntegrators) items.push_back(std::string(entry.name) + " (" + entry.runs + ")");
+    return items;
+  }();
+  return menu;
+}
 constexpr int kInspectedSamples = 16;
 const ImVec4 kWarning(1.0f, 0.45f, 0.35f, 1.0f), kGood(0.5f, 0.9f, 0.5f, 1.0f), kDim(0.65f, 0.65f, 0.65f, 1.0f);
 
@@ -135,7 +136,7 @@ void App::restartRender() {
   scene->render.lightSamples = lightSamples_;
   scene_ = scene;
   RenderOptions renderOptions;
-  renderOptions.integrator = kIntegrators[integrator_];
+  renderOptions.integrator = kIntegrators[integrator_].integrator;
   renderOptions.progress = false;
   renderOptions.threads = options_.threads;
   renderOptions.maxPassSpp = 4;  // refresh the window often
@@ -171,7 +172,7 @@ void App::inspect(IVec2 pixel) {
     inspectionLights_ = std::make_unique<const Lights>(Lights::fromScene(base_, kLinkedTasks.environment));
   }
   RenderOptions renderOptions;
-  renderOptions.integrator = kIntegrators[integrator_];
+  renderOptions.integrator = kIntegrators[integrator_].integrator;
   inspection_ = inspectPixel(*scene_, *inspectionAccelerator_, *inspectionLights_, renderOptions, pixel,
                              std::min(spp_, kInspectedSamples));
 }
@@ -317,7 +318,10 @@ void App::drawSettings() {
     changed = true;
   }
   ImGui::SameLine();
-  changed |= ImGui::Combo("integrator", &integrator_, kIntegratorNames, IM_ARRAYSIZE(kIntegratorNames));
+  changed |= ImGui::Combo(
+      "integrator", &integrator_,
+      [](void*, int i, const char** text) { return *text = integratorMenu()[size_t(i)].c_str(), true; }, nullptr,
+      int(std::size(kIntegrators)));
   changed |= ImGui::SliderInt("spp", &spp_, 1, 4096, "%d", ImGuiSliderFlags_Logarithmic);
   ImGui::SameLine();
   changed |= ImGui::SliderInt("max depth (-m)", &maxDepth_, 0, 16);
@@ -359,7 +363,7 @@ void App::drawInspector() {
   const PixelInspection& inspection = inspection_;
   ImGui::Text("pixel %d,%d: %zu samples, mean (%.4f, %.4f, %.4f), integrator %s", inspection.pixel.x,
               inspection.pixel.y, inspection.samples.size(), double(inspection.mean.x), double(inspection.mean.y),
-              double(inspection.mean.z), integratorName(kIntegrators[integrator_]));
+              double(inspection.mean.z), kIntegrators[integrator_].name);
   if (renderCurrent_ && inspection.pixel.x < renderImage_.width && inspection.pixel.y < renderImage_.height) {
     const Color shown = renderImage_.at(inspection.pixel.x, inspection.pixel.y);
     ImGui::TextColored(kDim, "rendered pixel (all %d spp): (%.4f, %.4f, %.4f)", spp_, double(shown.x),

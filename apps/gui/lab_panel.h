@@ -1,4 +1,4 @@
-// The debugger's "Lab" panel: the sampling lab (apps/demo/lab.h) live. Pick a
+// The debugger's "Lab" panel: the sampling lab (lab/lab.h) live. Pick a
 // warp, move its parameters, and the samples, the warped grid, the
 // histogram beside the integrated pdf, their difference and the chi-square
 // verdict are recomputed in the background: the same code as `pathlab lab`

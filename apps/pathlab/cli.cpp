@@ -126,8 +126,9 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   options.progress = !args.quiet;
   options.cancel = &cancel;
   auto integrator = integratorFromName(args.integrator);
-  if (!integrator) throw Error("--integrator: unknown integrator " + inQuotes(args.integrator) +
-                               " (path, direct, preview, normals, mis, mis-balance, light, bsdf)");
+  if (!integrator) {
+    throw Error("--integrator: unknown integrator " + inQuotes(args.integrator) + " (" + integratorNames() + ")");
+  }
   options.integrator = *integrator;
   if (const std::string problem = mediaProblem(scene, options); !problem.empty()) {
     throw Error("--integrator " + args.integrator + ": " + scene.source + " has media, which only task 12's path "

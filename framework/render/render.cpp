@@ -18,15 +18,23 @@
 namespace pathlab {
 
 std::optional<Integrator> integratorFromName(const std::string& name) {
-  if (name == "path") return Integrator::Path;
-  if (name == "direct") return Integrator::Direct;
-  if (name == "preview") return Integrator::Preview;
-  if (name == "normals") return Integrator::Normals;
-  if (name == "mis") return Integrator::Mis;
-  if (name == "mis-balance") return Integrator::MisBalance;
-  if (name == "light") return Integrator::LightSampling;
-  if (name == "bsdf") return Integrator::BsdfSampling;
+  for (const IntegratorEntry& entry : kIntegrators) {
+    if (name == entry.name) return entry.integrator;
+  }
   return std::nullopt;
+}
+
+const char* integratorName(Integrator integrator) {
+  for (const IntegratorEntry& entry : kIntegrators) {
+    if (entry.integrator == integrator) return entry.name;
+  }
+  return "?";
+}
+
+std::string integratorNames() {
+  std::string names;
+  for (const IntegratorEntry& entry : kIntegrators) names += (names.empty() ? "" : ", ") + std::string(entry.name);
+  return names;
 }
 
 std::optional<MisEstimator> misEstimatorOf(Integrator integrator) {
@@ -37,20 +45,6 @@ std::optional<MisEstimator> misEstimatorOf(Integrator integrator) {
     case Integrator::BsdfSampling: return MisEstimator::BsdfSampling;
     default: return std::nullopt;
   }
-}
-
-const char* integratorName(Integrator integrator) {
-  switch (integrator) {
-    case Integrator::Path: return "path";
-    case Integrator::Direct: return "direct";
-    case Integrator::Preview: return "preview";
-    case Integrator::Normals: return "normals";
-    case Integrator::Mis:
-    case Integrator::MisBalance:
-    case Integrator::LightSampling:
-    case Integrator::BsdfSampling: return misEstimatorName(*misEstimatorOf(integrator));
-  }
-  return "?";
 }
 
 std::string tasksLightingRender(const Scene& scene, Integrator integrator) {

@@ -41,8 +41,29 @@ enum class Integrator {
 // The weights an integrator gives task 9's tracePathMis; nothing for the others.
 std::optional<MisEstimator> misEstimatorOf(Integrator integrator);
 
+// Every integrator once, in menu order: its name (pathlab --integrator,
+// pathlab-bench's strategies, the GUI's menu) and the tasks whose code it
+// runs (the GUI's menu says it beside the name).
+struct IntegratorEntry {
+  Integrator integrator;
+  const char* name;
+  const char* runs;
+};
+inline constexpr IntegratorEntry kIntegrators[] = {
+    {Integrator::Path, "path", "tasks 4-8"},
+    {Integrator::Direct, "direct", "task 4"},
+    {Integrator::Preview, "preview", "tasks 1-3"},
+    {Integrator::Normals, "normals", "tasks 1-2"},
+    {Integrator::Mis, "mis", "task 9, power"},
+    {Integrator::MisBalance, "mis-balance", "task 9"},
+    {Integrator::LightSampling, "light", "task 9, alone"},
+    {Integrator::BsdfSampling, "bsdf", "task 9, alone"},
+};
+
 std::optional<Integrator> integratorFromName(const std::string& name);
 const char* integratorName(Integrator integrator);
+// "path, direct, ...": every name, for a message.
+std::string integratorNames();
 
 // The tasks whose code lights a render of `scene` with `integrator`, e.g.
 // "1-5, 8": camera rays, hits and the tree always; direct lighting and paths

@@ -1,5 +1,7 @@
 #include "render/strategies.h"
 
+#include "render/render.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -37,11 +39,8 @@ MisWeights misWeights(MisEstimator estimator) {
 }
 
 const char* misEstimatorName(MisEstimator estimator) {
-  switch (estimator) {
-    case MisEstimator::LightSampling: return "light";
-    case MisEstimator::BsdfSampling: return "bsdf";
-    case MisEstimator::Balance: return "mis-balance";
-    case MisEstimator::Power: return "mis";
+  for (const IntegratorEntry& entry : kIntegrators) {  // the integrator that runs it gives the name
+    if (misEstimatorOf(entry.integrator) == estimator) return entry.name;
   }
   return "?";
 }

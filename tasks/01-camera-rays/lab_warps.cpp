@@ -1,6 +1,6 @@
-// Task 1's warps in the sampling lab (apps/demo/lab.h): its sampling
+// Task 1's warps in the sampling lab (lab/lab.h): its sampling
 // routines, called as this build links them (the student's file or the
-// reference), each against its own pdf. apps/CMakeLists.txt compiles this
+// reference), each against its own pdf. lab/CMakeLists.txt compiles this
 // file into the lab; addCameraRaysWarps is listed with the other tasks'.
 #include "lab_support.h"
 #include "tasks/camera_rays.h"

@@ -1,6 +1,6 @@
-// Task 8's warps in the sampling lab (apps/demo/lab.h): its sampling
+// Task 8's warps in the sampling lab (lab/lab.h): its sampling
 // routines, called as this build links them (the student's file or the
-// reference), each against its own pdf. apps/CMakeLists.txt compiles this
+// reference), each against its own pdf. lab/CMakeLists.txt compiles this
 // file into the lab; addMicrofacetWarps is listed with the other tasks'.
 #include "lab_support.h"
 #include "tasks/microfacet.h"

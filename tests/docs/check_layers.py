@@ -8,16 +8,27 @@ this check. A file's layer is its folder, so a new file needs no entry
 anywhere:
   framework/LAYER/*                  LAYER
   tasks/NN-name/debugger.cpp         debug (a task's debugger is a view)
-  tasks/NN-name/lab_warps.cpp        on top (its warps in the sampling lab, apps/demo/)
-  tasks/NN-name/*.cpp, solutions/, tests/mutants/, tests/alternates/
-                                     tasks (task files)
+  lab/*, tasks/NN-name/lab_warps.cpp lab: the sampling lab and the lecture demos'
+                                     library, on top of every framework layer
+                                     (a task's warps in the lab)
+  tasks/NN-name/*.cpp, solutions/    tasks (task files)
+  --variants DIR: DIR/*/NN-name/*.cpp
+                                     tasks (the validity matrix's mutants and
+                                     alternates, which a build generates)
   apps/, tests/                      on top: may include any layer
 An include names its layer: #include "core/scene.h" is framework/core/scene.h.
+A file of a layer includes only framework headers, and a file of the lab
+also lab/'s by their names (#include "lab_support.h"): never a header of
+apps/, of tests/ (the grader's wire protocol, the suites) or anything else
+the build's include paths might find.
 
 Fails on
   - an include of a layer the file's layer does not sit on, directly or
     through the layers below (an upward or sideways include);
   - an include of a framework header that does not exist;
+  - in a layer's file (the framework, a task, the lab), an include of
+    anything but the framework's headers (and, in the lab, lab/'s): an
+    include from a task into apps/, or from the engine into the grader;
   - a folder in framework/ that is not a declared layer;
   - a cycle among the framework's headers, or among the declared layers;
   - a layer library (or, for the task APIs, the reference task objects)
@@ -26,7 +37,7 @@ Fails on
     hand).
 
 usage: check_layers.py REPOSITORY --layer NAME:BELOW[,BELOW...][=ARCHIVE] ...
-                       [--objects NAME=OBJECT[;OBJECT...]] ...
+                       [--objects NAME=OBJECT[;OBJECT...]] ... [--variants DIR]
 (tests/CMakeLists.txt passes the declarations and the built libraries.)"""
 import argparse
 import re
@@ -35,6 +46,7 @@ import sys
 from pathlib import Path
 
 TOP = "(top)"  # apps and tests: may include every layer
+LAB = "lab"  # lab/ and the tasks' lab warps: on top of every framework layer, below apps
 
 
 def parse_layers(specs):
@@ -74,22 +86,26 @@ def layer_of_file(rel: str, layers) -> str:
             raise SystemExit(f"check_layers: framework/{parts[1]}/ is not a layer: declare it in "
                              "framework/CMakeLists.txt (pathlab_add_layer) or move its files into one")
         return parts[1]
+    if parts[0] == LAB:
+        return LAB
     if parts[0] == "tasks":
-        return {"debugger.cpp": "debug", "lab_warps.cpp": TOP}.get(parts[-1], "tasks")
-    if parts[0] == "solutions" or parts[:2] in (["tests", "mutants"], ["tests", "alternates"]):
+        return {"debugger.cpp": "debug", "lab_warps.cpp": LAB}.get(parts[-1], "tasks")
+    if parts[0] == "solutions":
         return "tasks"
     return TOP
 
 
 def includes(path: Path):
+    """(line number, the folder it names or "", the header) of each #include "..." (not <...>)."""
     for number, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
-        m = re.match(r'\s*#\s*include\s+"(\w+)/([^"]+)"', line)
+        m = re.match(r'\s*#\s*include\s+"([^"]+)"', line)
         if m:
-            yield number, m.group(1), m.group(1) + "/" + m.group(2)
+            folder = re.match(r"(\w+)/", m.group(1))
+            yield number, folder.group(1) if folder else "", m.group(1)
 
 
 def source_files(root: Path):
-    patterns = ("framework/**/*", "tasks/*/*.cpp", "solutions/*/*.cpp", "apps/**/*.cpp", "apps/**/*.h",
+    patterns = ("framework/**/*", "tasks/*/*.cpp", "solutions/*/*.cpp", "lab/*.cpp", "lab/*.h", "apps/**/*.cpp", "apps/**/*.h",
                 "tests/**/*.cpp", "tests/**/*.h")
     return sorted({p for pattern in patterns for p in root.glob(pattern)
                    if p.is_file() and p.suffix in (".h", ".cpp", ".in")})
@@ -135,6 +151,7 @@ def main() -> int:
     parser.add_argument("root", type=Path)
     parser.add_argument("--layer", action="append", default=[])
     parser.add_argument("--objects", action="append", default=[])
+    parser.add_argument("--variants", type=Path, help="the generated mutants and alternates (BUILD/tests/validity)")
     args = parser.parse_args()
     root = args.root.resolve()
     framework = root / "framework"
@@ -145,19 +162,28 @@ def main() -> int:
         name, _, files = spec.partition("=")
         binaries.setdefault(name, []).extend(f for f in files.split(";") if f)
     reach = closure(below)
+    reach[LAB] = set(below) | {LAB}
     problems = []
     for folder in sorted(p.name for p in framework.iterdir() if p.is_dir() and any(p.rglob("*.*"))):
         if folder not in below:
             problems.append(f"framework/{folder}/ is not a declared layer (framework/CMakeLists.txt: pathlab_add_layer)")
 
     files = source_files(root)
+    variants = sorted((root / args.variants).glob("*/*/*.cpp")) if args.variants else []
     graph = {}
-    for path in files:
-        rel = str(path.relative_to(root))
-        layer = layer_of_file(rel, below)
+    for path in files + variants:
+        rel = str(path.relative_to(root)) if path.is_relative_to(root) else str(path)
+        layer = "tasks" if path in variants else layer_of_file(rel, below)
         for number, target, header in includes(path):
             if target not in below:
-                continue  # not the framework's (a suite's own calls.h, a demo's figure.h, ...)
+                # Not the framework's: apps and tests may (a suite's calls.h), the lab its own headers.
+                if layer == LAB and "/" not in header and (root / "lab" / header).is_file():
+                    continue
+                if layer != TOP:
+                    problems.append(f"{rel}:{number} ({layer}) includes {header}, which is not a framework header"
+                                    + (" or one of lab/'s" if layer == LAB else "")
+                                    + ": a layer includes only the layers below it")
+                continue
             if not header_exists(framework, header):
                 problems.append(f"{rel}:{number} includes {header}, which is not in framework/")
             if rel.startswith("framework/"):
@@ -179,7 +205,7 @@ def main() -> int:
                      for symbol in sorted(used - allowed)]
     for p in problems:
         print(p)
-    print(f"{len(below)} layers ({' < '.join(order(below))}), {len(files)} files' includes, "
+    print(f"{len(below)} layers ({' < '.join(order(below))}), {len(files) + len(variants)} files' includes, "
           f"symbols of {', '.join(checked) or 'no library'}: {len(problems)} problems")
     return 1 if problems else 0
 

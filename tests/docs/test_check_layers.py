@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """check_layers.py, tested: a small tree of layers that passes, and one
 violation at a time that must fail with the line that names it (an upward,
-a sideways and a task file's include, a missing header, an undeclared
+a sideways and a task file's include, an include from a task or the lab
+into apps/ or from the engine into the grader, a missing header, an undeclared
 folder, a header cycle, a layer cycle, and calls upward that only the
 libraries' symbols show).
 
@@ -31,7 +32,11 @@ BASE = {
     "tasks/01-one/one.cpp": '#include "tasks/api.h"\nnamespace pathlab { int task() { return scene(); } }\n',
     "tasks/01-one/debugger.cpp": '#include "debug/view.h"\n#include "render/render.h"\n',
     "solutions/01-one/one.cpp": '#include "tasks/api.h"\nnamespace pathlab { int task() { return scene(); } }\n',
+    "tasks/01-one/lab_warps.cpp": '#include "lab_support.h"\n#include "render/render.h"\n',
+    "lab/lab_support.h": '#pragma once\n#include "debug/view.h"\n',
+    "lab/lab.cpp": '#include "lab_support.h"\n#include "scene/load.h"\n',
     "apps/main.cpp": '#include "debug/view.h"\n#include "scene/load.h"\n#include "core/list.h"\n#include "cli.h"\n',
+    "apps/cli.h": '#pragma once\n#include "lab_support.h"\n',
     "tests/test.cpp": '#include "render/render.h"\n#include "calls.h"\n',
 }
 
@@ -44,8 +49,17 @@ CASES = [
      "framework/scene/load.cpp:1 (scene) includes tasks/api.h (tasks)"),
     ("a task file including the render layer", {"tasks/01-one/one.cpp": '#include "render/render.h"\n'}, [],
      "tasks/01-one/one.cpp:1 (tasks) includes render/render.h (render)"),
-    ("a mutant including the debug layer", {"tests/mutants/01-one/m.cpp": '#include "debug/view.h"\n'}, [],
-     "tests/mutants/01-one/m.cpp:1 (tasks) includes debug/view.h (debug)"),
+    ("a generated mutant including the debug layer", {"build/tests/validity/mutants/01-one/m.cpp": '#include "debug/view.h"\n'},
+     ["--variants", "build/tests/validity"],
+     "build/tests/validity/mutants/01-one/m.cpp:1 (tasks) includes debug/view.h (debug)"),
+    ("a task's lab warps including an app's header", {"tasks/01-one/lab_warps.cpp": '#include "cli.h"\n'}, [],
+     "tasks/01-one/lab_warps.cpp:1 (lab) includes cli.h, which is not a framework header or one of lab/'s"),
+    ("a task file including the lab", {"tasks/01-one/one.cpp": '#include "lab_support.h"\n'}, [],
+     "tasks/01-one/one.cpp:1 (tasks) includes lab_support.h, which is not a framework header"),
+    ("the engine including the grader's protocol", {"framework/core/list.h.in": '#pragma once\n#include "remote/wire.h"\n'},
+     [], "framework/core/list.h.in:2 (core) includes remote/wire.h, which is not a framework header"),
+    ("the lab including an app", {"lab/lab.cpp": '#include "../apps/cli.h"\n'}, [],
+     "lab/lab.cpp:1 (lab) includes ../apps/cli.h, which is not a framework header or one of lab/'s"),
     ("an include of a header that is gone", {"apps/main.cpp": '#include "core/gone.h"\n'}, [],
      "apps/main.cpp:1 includes core/gone.h, which is not in framework/"),
     ("a folder that is no layer", {"framework/extra/x.h": "#pragma once\n"}, [],

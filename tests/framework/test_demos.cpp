@@ -1,4 +1,4 @@
-// The lecture demos' numerics (apps/demo): the inversions they teach must be
+// The lecture demos' numerics (lab/): the inversions they teach must be
 // right to the last digit, and every demo must run and say what it shows.
 #include "doctest_strings.h"
 

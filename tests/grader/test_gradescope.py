@@ -24,6 +24,7 @@ removed when everything passed (kept with --keep, or on failure).
 usage: test_gradescope.py REPO_ROOT WORK_DIR [--keep]"""
 import json
 import os
+import runpy
 import shutil
 import subprocess
 import sys
@@ -47,13 +48,13 @@ ALL_TASKS = sorted(pathlab_tasks.tasks(root))
 VISIBILITIES = {"hidden", "after_due_date", "after_published", "visible"}
 # Graded here and by a student's tools/check (test_check.py): mistakes that
 # keep part of the points, and correct solutions written differently.
-SAME_SCORE_FILES = ["tests/mutants/01-camera-rays/half-pixel-offset.cpp",
-                    "tests/mutants/02-intersection/swapped-barycentrics.cpp",
-                    "tests/mutants/03-bvh/median-split.cpp",
-                    "tests/mutants/05-path-tracing/roulette-not-rescaled.cpp",
-                    "tests/mutants/07-environment/pdf-without-sin-theta.cpp",
-                    "tests/alternates/03-bvh/eight-bins.cpp",
-                    "tests/alternates/06-mirror-glass/exact-fresnel.cpp"]
+SAME_SCORE_FILES = ["mutants/01-camera-rays/half-pixel-offset.cpp",  # generated (tests/mutants/generate.py)
+                    "mutants/02-intersection/swapped-barycentrics.cpp",
+                    "mutants/03-bvh/median-split.cpp",
+                    "mutants/05-path-tracing/roulette-not-rescaled.cpp",
+                    "mutants/07-environment/pdf-without-sin-theta.cpp",
+                    "alternates/03-bvh/eight-bins.cpp",
+                    "alternates/06-mirror-glass/exact-fresnel.cpp"]
 kept = work_dir / "gradescope-results"  # KIND/ (the submission) and KIND.json, for test_check.py
 
 
@@ -220,9 +221,13 @@ def main() -> int:
                 failures.append(f"half-done: {len(compiled)} tests report a build failure, e.g. {compiled[0]}")
 
         boards = {}
+        made = runpy.run_path(str(root / "tests/mutants/generate.py"))["variants"](root)
         for path in SAME_SCORE_FILES:
             kind = Path(path).parent.parent.name + "-" + Path(path).stem  # e.g. mutants-half-pixel-offset
-            report = grade(kind, [root / path], env, failures)  # its score is the validity matrix's to judge
+            variant = work_dir / "variants" / path
+            variant.parent.mkdir(parents=True, exist_ok=True)
+            variant.write_text(made[path])
+            report = grade(kind, [variant], env, failures)  # its score is the validity matrix's to judge
             if report and half_done:  # every test present, whatever the submission holds
                 shape = lambda r: sorted((t["name"], t["max_score"]) for t in r["tests"])
                 if shape(report) != shape(half_done):

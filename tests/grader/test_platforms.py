@@ -46,6 +46,7 @@ repository private; WORK_DIR is unused)"""
 import base64
 import json
 import os
+import runpy
 import shutil
 import sys
 import tempfile
@@ -148,6 +149,17 @@ def autoresult_problems(result, problems, columns, kind) -> bool:
     return True
 
 
+def generated_mutant(n, last=False):
+    """Task n's first (or last) mutant by name, made as the build makes it (tests/mutants/generate.py)
+    into the scratch folder: nothing generated is in git."""
+    made = runpy.run_path(str(root / "tests/mutants/generate.py"))["variants"](root)
+    rel = sorted(r for r in made if r.startswith(f"mutants/{TASKS[n][0]}/"))[-1 if last else 0]
+    path = work / "variants" / rel
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(made[rel])
+    return path
+
+
 def check_autolab(pair, single):
     out = work / "autolab"
     made = assessment(out, pair, "task")
@@ -156,7 +168,7 @@ def check_autolab(pair, single):
         fail(f"autolab: handin {made.handin}, problems {problems}: not a zip and one problem per task")
     maxima = dict(problems)
     mutant_task = next(n for n in pair if n != 3)
-    mutant = sorted((root / "tests/mutants" / TASKS[mutant_task][0]).glob("*.cpp"))[0]
+    mutant = generated_mutant(mutant_task)
     cases = {"stubs": {n: "stub" for n in pair}, "reference": {n: "reference" for n in pair},
              "half-done": {3: "reference", mutant_task: mutant}}
     for kind, kinds in cases.items():
@@ -193,7 +205,7 @@ def check_autolab(pair, single):
     if made.handin != TASKS[single][1] or len(problems) < 2 or \
             not all(p.startswith(f"Task {single}: ") for p, _ in problems):
         fail(f"autolab per test: handin {made.handin}, problems {problems[:2]}")
-    mutant = sorted((root / "tests/mutants" / TASKS[single][0]).glob("*.cpp"))[-1]
+    mutant = generated_mutant(single, last=True)
     for kind, kinds in (("per-test-reference", {single: "reference"}), ("per-test-mutant", {single: mutant})):
         result, _ = tango_job(made, task_files(kinds), kind)
         if result is None or not autoresult_problems(result, problems, columns, kind):
@@ -265,7 +277,7 @@ def check_prairielearn(tasks):
                 f'file-names="{TASKS[n][1]}"' in (question / "question.html").read_text()):
             fail(f"prairielearn task {n}: info.json or question.html is not an external-graded upload of "
                  f"{TASKS[n][1]}: {options}")
-        mutant = sorted((root / "tests/mutants" / TASKS[n][0]).glob("*.cpp"))[0]
+        mutant = generated_mutant(n)
         for kind, files in (("stub", task_files({n: "stub"})), ("reference", task_files({n: "reference"})),
                             ("mutant", task_files({n: mutant})),
                             ("not-a-task-file", [("notes.txt", root / "README.md")])):

@@ -78,7 +78,7 @@ def lab(program, warp, *settings, figure=None):
 
 SEEDS = (1, 2, 3)
 # The reference with every default must not sit in the test's tail: p at
-# least this (the defaults' seed was chosen for it: apps/demo/lab.cpp).
+# least this (the defaults' seed was chosen for it: lab/lab.cpp).
 DEFAULTS_LEAST_P = 0.05
 
 

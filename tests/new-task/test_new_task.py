@@ -5,8 +5,8 @@ folders is edited, and then
 
   0. a second graded call is added as docs/own-task.md says (T13.2, a call
      of three arguments asked in a batch, worth 3 of the task's 7 points);
-  1. `git status` lists only the task's folders (tasks/, solutions/, tests/
-     with its generated mutants/ and alternates/, writeup/), its API header
+  1. `git status` lists only the task's folders (tasks/, solutions/, tests/,
+     writeup/; its mutants and alternates are made by the build), its API header
      framework/tasks/NAME.h, and one generated row of README.md's task table;
   2. it configures and builds, without a warning in the task's files; its
      CTest tests pass: the suite on the reference, the suite failing on the
@@ -110,21 +110,20 @@ SECOND_CALL = [
 
 def second_graded_call():
     """A second graded call added to the new task as a course adds one (docs/own-task.md): the header,
-    the stub's TODO, the reference, the call, its server and its test; then the generated mutants
-    made again from the reference (tests/mutants/generate.py)."""
+    the stub's TODO, the reference, the call, its server and its test; then its hints' catalogue
+    made again (the build makes the mutants again from the new reference)."""
     for rel, after, added in SECOND_CALL:
         path = copy / rel
         text = path.read_text()
         if expect(text.count(after) == 1, f"{rel}: the template no longer has {after.strip()!r} once"):
             path.write_text(text.replace(after, after + added))
-    run([sys.executable, copy / "tests/mutants/generate.py"], what="tests/mutants/generate.py")
     run([sys.executable, copy / "tools/hint-catalogue"], what="tools/hint-catalogue")
 
 
 def status_lists_only_the_task():
     """1. What new-task changed: the task's folders, its header and one README row."""
-    own = (f"tasks/{FOLDER}/", f"solutions/{FOLDER}/", f"tests/{FOLDER}/", f"tests/mutants/{FOLDER}/",
-           f"tests/alternates/{FOLDER}/", f"writeup/{FOLDER}.md", f"framework/tasks/{STEM}.h")
+    own = (f"tasks/{FOLDER}/", f"solutions/{FOLDER}/", f"tests/{FOLDER}/", f"writeup/{FOLDER}.md",
+           f"framework/tasks/{STEM}.h")
     status = run(["git", "status", "--porcelain", "-uall"], what="git status").stdout.splitlines()
     paths = [line[3:] for line in status]
     others = [p for p in paths if not p.startswith(own) and p != "README.md"]
@@ -259,7 +258,7 @@ def every_platform():
     mutant, handed in as the task's file) the same points everywhere, which are tools/check's."""
     wrong = work / "wrong-handin"
     wrong.mkdir(exist_ok=True)
-    shutil.copy(copy / "tests/mutants" / FOLDER / "slices-uniform.cpp", wrong / f"{STEM}.cpp")
+    shutil.copy(build / "tests" / "validity" / "mutants" / FOLDER / "slices-uniform.cpp", wrong / f"{STEM}.cpp")
     env = dict(os.environ, PATHLAB_SANDBOX_UID=os.environ.get("PATHLAB_SANDBOX_UID", "64993"),
                PATHLAB_PLATFORMS_UID=os.environ.get("PATHLAB_PLATFORMS_UID", "64996"))
     tried = run([sys.executable, copy / "tools/try-platform", "all", "--tasks", str(N), "stubs", "reference", wrong,

@@ -6,7 +6,7 @@
 // enormous standard error: judged by its own variance it passes any such
 // check. So each mean a suite checks carries a ceiling on its variance per
 // sample: kNoiseFactor times the largest variance that the reference and the
-// suite's correct alternates (tests/alternates/NN-name: uniform instead of
+// suite's correct alternates (tests/NN-name/validity.py: uniform instead of
 // cosine sampling, other Russian roulettes, ...) have on the same estimate,
 // stored in tests/NN-name/reference-variances.txt by
 // tools/make-reference-images. The mean is judged with the candidate's own

@@ -1,6 +1,6 @@
-// Task @N@'s warps in the sampling lab (apps/demo/lab.h): its sampling
+// Task @N@'s warps in the sampling lab (lab/lab.h): its sampling
 // routines, called as this build links them (the student's file or the
-// reference), each against its own pdf. apps/CMakeLists.txt compiles this
+// reference), each against its own pdf. lab/CMakeLists.txt compiles this
 // file into the lab and lists add@NAME@Warps with the other tasks'.
 #include <array>
 

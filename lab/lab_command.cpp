@@ -11,7 +11,7 @@
 
 namespace pathlab::lab {
 
-// pathlab lab WARP: the sampling lab headless (apps/demo/lab.h).
+// pathlab lab WARP: the sampling lab headless (lab/lab.h).
 int runLab(const LabArgs& args) {
   if (args.list) {
     for (const Warp& warp : allWarps()) {

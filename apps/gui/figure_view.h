@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "../gui/texture.h"
+#include "texture.h"
 #include "figure.h"
 
 namespace pathlab::demo {
