@@ -16,9 +16,10 @@ pathlab_writeup=(python3-markdown chromium)
 # the write-up in a browser (Chromium; tidy validates its HTML, poppler-utils reads its PDF),
 # ccache, which serves the nested builds of the grading tests (quickstart.sh), and a YAML reader
 # for the grading platforms' files (Autolab's assessment, GitHub Classroom's workflow), and strace, which
-# lists every program a grade runs outside its sandbox (docs/threat-model.md).
+# lists every program a grade runs outside its sandbox (docs/threat-model.md); the formatter and the
+# linter (clang-format, pyflakes: tools/check-format).
 pathlab_test=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick bubblewrap libseccomp-dev "${pathlab_writeup[@]}" tidy
-              poppler-utils ccache python3-yaml strace)
+              poppler-utils ccache python3-yaml strace clang-format pyflakes3)
 # Grading: the core and the sandbox (bubblewrap; util-linux for setpriv, prlimit and ipcrm;
 # libseccomp for pathlab-confine, the uid mode's system-call filter).
 pathlab_grading=("${pathlab_core[@]}" bubblewrap util-linux libseccomp-dev)
