@@ -26,6 +26,7 @@
 #ifdef PATHLAB_HAVE_EMBREE
 #include "embree_scene.h"
 #endif
+#include "bvh_run.h"
 #include "linked_tasks.h"
 
 namespace pathlab::bench {
@@ -108,13 +109,6 @@ double mraysPerSecond(size_t n, int threads, const std::function<void(size_t)>& 
   return double(n) / median(seconds) / 1e6;
 }
 
-struct RaySet {
-  const char* name;
-  std::vector<Ray> rays;
-  std::vector<Interval> ranges;
-  bool occlusion = false;
-};
-
 // Primary rays of a view that frames the mesh; shadow rays from their hits
 // towards a point light; diffuse rays from their hits in cosine-distributed
 // directions (incoherent).
@@ -187,65 +181,6 @@ Task3Run runTask3(const RaySet& set, const Bvh& bvh, const LeafGeometry& geometr
   return run;
 }
 
-// The reference's task 3 on the same mesh and rays: the reference build
-// beside this program (pathlab-bench-reference, made where this build links
-// the student's task 3 and the reference is there) run with
-// --task3-speed-only. Its JSON, or nothing and `why`.
-std::optional<Json> referenceTask3Speed(const BvhBenchOptions& options, int threads, std::string& why) {
-  const std::string self = currentExecutablePath();
-#if defined(_WIN32)
-  const char* kReferenceBench = "pathlab-bench-reference.exe";
-#else
-  const char* kReferenceBench = "pathlab-bench-reference";
-#endif
-  const std::filesystem::path reference = std::filesystem::path(self).parent_path() / kReferenceBench;
-  if (self.empty() || !fileStatus(reference.string()).found) {
-    why = "no reference build beside this program (" + std::string(kReferenceBench) +
-          " is built where the reference is there: solutions/, or a student release's reference-objects/ "
-          "for this platform)";
-    return std::nullopt;
-  }
-  const std::filesystem::path out =
-      std::filesystem::temp_directory_path() / ("pathlab-bench-reference-" + std::to_string(currentProcessId()) + ".json");
-  std::vector<std::string> arguments;
-  if (options.triangles > 0) arguments = {"--triangles", std::to_string(options.triangles)};
-  else if (!options.mesh.empty()) arguments = {options.mesh};
-  arguments.insert(arguments.begin(), "bvh");
-  for (const std::string& a : {std::string("--threads"), std::to_string(threads), std::string("--task3-speed-only"),
-                               out.string()}) {
-    arguments.push_back(a);
-  }
-  std::string error;
-  const int code = runProgram(reference.string(), arguments, error);
-  const FileRead read = readRegularFile(out.string(), 1 << 20);
-  removeFileQuietly(out.string());
-  if (code != 0 || !read.opened) {
-    why = reference.string() + " failed (" + (code < 0 ? error : "exit code " + std::to_string(code)) + ")";
-    return std::nullopt;
-  }
-  Json json = Json::parse(read.bytes, nullptr, false);
-  if (json.is_discarded() || json.value("task3", "") != "reference") {
-    why = reference.string() + " did not report the reference's task 3";
-    return std::nullopt;
-  }
-  return json;
-}
-
-// ours / theirs, when theirs was measured and is not 0 (an empty ray set).
-std::optional<double> ratioTo(double ours, std::optional<double> theirs) {
-  if (!theirs || !(*theirs > 0.0)) return std::nullopt;
-  return ours / *theirs;
-}
-
-struct SetResult {
-  double task1 = 0.0, taskN = 0.0;  // task 3's BVH (with task 2's triangle test in its leaves)
-  std::optional<double> embree1, embreeN;
-  std::optional<size_t> mismatches;  // rays where task 3 is wrong
-  size_t embreeMisses = 0;           // true hits that Embree missed
-  double fast1 = 0.0, fastN = 0.0;   // the framework's render path (--accel fast) over the same tree
-  size_t fastMismatches = 0;         // rays where it differs from task 3 at all (primitive, t, or blocked)
-};
-
 #ifdef PATHLAB_HAVE_EMBREE  // only the Embree comparison asks
 // Does the ray hit triangle `primitive` at about distance t, by a
 // double-precision Moller-Trumbore with edges counted as inside?
@@ -266,230 +201,170 @@ bool hitsInDouble(const Scene& scene, const Ray& ray, uint32_t primitive, float 
 }
 #endif
 
-}  // namespace
+// Task 3's tree, built (median of three, one thread) and validated.
+void buildTask3(BvhRun& run) {
+  const std::vector<Aabb> bounds = primitiveBounds(run.scene);
+  run.buildTask = medianBuildSeconds([&] { run.bvh = Bvh{}; }, [&] { run.bvh = buildBvh(bounds); });
+  const std::string problem = validateBvh(run.bvh, run.scene.primitives.size(), &bounds);
+  if (!problem.empty()) throw Error("the task-3 BVH (" + describeTasks(run.tasks, {3}) + ") is not valid: " + problem);
+}
 
-int runBvhBench(const BvhBenchOptions& options) {
-  // Whose BVH this is: task 3 as linked (and task 2's triangle test in the leaves).
-  const LinkedTasks tasks = linkedTasks();
-  const std::string label = tasks[3] == Code::Yours ? "yours" : tasks[3] == Code::Reference ? "reference" : "task 3";
-  const std::string shortLabel = tasks[3] == Code::Reference ? "ref" : label;
-  const int threads = options.threads > 0 ? options.threads : defaultThreadCount();
-  std::string description;
-  Scene scene = loadMesh(options.mesh, options.triangles, description);
-  const size_t triangles = scene.triangleCount();
-  if (scene.meshes.size() != 1 || !scene.spheres.empty()) throw Error("pathlab-bench bvh: expected one triangle mesh");
-
-  // Builds: median of three, one thread each.
-  const std::vector<Aabb> bounds = primitiveBounds(scene);
-  Bvh bvh;
-  const double buildTask = medianBuildSeconds([&] { bvh = Bvh{}; }, [&] { bvh = buildBvh(bounds); });
-  const std::string problem = validateBvh(bvh, scene.primitives.size(), &bounds);
-  if (!problem.empty()) throw Error("the task-3 BVH (" + describeTasks(tasks, {3}) + ") is not valid: " + problem);
-  if (!options.task3SpeedOut.empty()) {
-    // Asked by a student build (referenceTask3Speed): task 3's speed alone, as JSON.
-    const LeafGeometry leaves(scene, bvh.primitives, kLinkedTasks.primitives);
-    Json json = {{"task3", codeName(tasks[3])}};
-    for (const RaySet& set : makeRaySets(scene, bvh, leaves)) {
-      const Task3Run run = runTask3(set, bvh, leaves, threads);
-      json[set.name] = {{"rays", set.rays.size()}, {"task3_mrays", run.mrays1}, {"task3_mrays_threads", run.mraysN}};
-    }
-    writeFileAtomically(options.task3SpeedOut, json.dump());
-    return 0;
+// Asked by a student build (referenceTask3Speed): task 3's speed alone, as JSON.
+void writeTask3Speed(const BvhRun& run) {
+  const LeafGeometry leaves(run.scene, run.bvh.primitives, kLinkedTasks.primitives);
+  Json json = {{"task3", codeName(run.tasks[3])}};
+  for (const RaySet& set : makeRaySets(run.scene, run.bvh, leaves)) {
+    const Task3Run task3 = runTask3(set, run.bvh, leaves, run.threads);
+    json[set.name] = {{"rays", set.rays.size()}, {"task3_mrays", task3.mrays1}, {"task3_mrays_threads", task3.mraysN}};
   }
-  // The fast path's layout: the leaves' geometry gathered in leaf order, then
-  // task 3's tree collapsed to eight children per node. (The task-3 walk reads
-  // the same gathered geometry; its build time above leaves it out.)
-  LeafGeometry geometry;
-  WideBvh wide;
-  const double buildWide = medianBuildSeconds(
+  writeFileAtomically(run.options.task3SpeedOut, json.dump());
+}
+
+// The fast path's layout: the leaves' geometry gathered in leaf order, then
+// task 3's tree collapsed to eight children per node (the task-3 walk reads
+// the same gathered geometry; its build time leaves it out); and Embree's.
+void buildOthers(BvhRun& run) {
+  run.buildWide = medianBuildSeconds(
       [&] {
-        wide = WideBvh();
-        geometry = LeafGeometry();
+        run.wide = WideBvh();
+        run.geometry = LeafGeometry();
       },
       [&] {
-        geometry = LeafGeometry(scene, bvh.primitives, kLinkedTasks.primitives);
-        wide = WideBvh(bvh, geometry, kLinkedTasks.primitives);
+        run.geometry = LeafGeometry(run.scene, run.bvh.primitives, kLinkedTasks.primitives);
+        run.wide = WideBvh(run.bvh, run.geometry, kLinkedTasks.primitives);
       });
-
-  std::optional<double> buildEmbree;
 #ifdef PATHLAB_HAVE_EMBREE
-  std::unique_ptr<EmbreeScene> embree;
   std::vector<double> buildTimes;
   for (int r = 0; r < kRepeats; ++r) {
-    embree = std::make_unique<EmbreeScene>(scene.meshes[0], 1);
-    buildTimes.push_back(embree->buildSeconds());
+    run.embree = std::make_unique<EmbreeScene>(run.scene.meshes[0], 1);
+    buildTimes.push_back(run.embree->buildSeconds());
   }
-  buildEmbree = median(buildTimes);
+  run.buildEmbree = median(buildTimes);
 #else
   std::fprintf(stderr, "Embree was not found when PathLab was built (install libembree-dev): skipping the comparison\n");
 #endif
+}
 
-  std::vector<RaySet> sets = makeRaySets(scene, bvh, geometry);
-  std::vector<SetResult> results(sets.size());
-  for (size_t s = 0; s < sets.size(); ++s) {
-    const RaySet& set = sets[s];
-    SetResult& result = results[s];
-    Task3Run task3 = runTask3(set, bvh, geometry, threads);
-    const std::vector<std::optional<PrimitiveHit>>& hits = task3.hits;
-    const std::vector<uint8_t>& blocked = task3.blocked;
-    result.task1 = task3.mrays1;
-    result.taskN = task3.mraysN;
-    std::vector<std::optional<PrimitiveHit>> fastHits(set.rays.size());
-    std::vector<uint8_t> fastBlocked(set.rays.size());
-    auto withFast = [&](size_t i) {
-      if (set.occlusion) fastBlocked[i] = wide.intersectAny(set.rays[i], set.ranges[i]);
-      else fastHits[i] = wide.intersectClosest(set.rays[i], set.ranges[i]);
-    };
-    result.fast1 = mraysPerSecond(set.rays.size(), 1, withFast);
-    result.fastN = mraysPerSecond(set.rays.size(), threads, withFast);
-    for (size_t i = 0; i < set.rays.size(); ++i) {
-      if (set.occlusion) {
-        result.fastMismatches += blocked[i] != fastBlocked[i];
-      } else {
-        const auto &a = hits[i], &b = fastHits[i];
-        result.fastMismatches += a.has_value() != b.has_value() || (a && (a->primitive != b->primitive || a->t != b->t));
-      }
+// The fast path's speed on a set, and the rays where it differs from task 3 at all.
+void measureFastPath(const BvhRun& run, const RaySet& set, const Task3Run& task3, SetResult& result) {
+  std::vector<std::optional<PrimitiveHit>> fastHits(set.rays.size());
+  std::vector<uint8_t> fastBlocked(set.rays.size());
+  auto withFast = [&](size_t i) {
+    if (set.occlusion)
+      fastBlocked[i] = run.wide.intersectAny(set.rays[i], set.ranges[i]);
+    else
+      fastHits[i] = run.wide.intersectClosest(set.rays[i], set.ranges[i]);
+  };
+  result.fast1 = mraysPerSecond(set.rays.size(), 1, withFast);
+  result.fastN = mraysPerSecond(set.rays.size(), run.threads, withFast);
+  for (size_t i = 0; i < set.rays.size(); ++i) {
+    if (set.occlusion) {
+      result.fastMismatches += task3.blocked[i] != fastBlocked[i];
+    } else {
+      const auto &a = task3.hits[i], &b = fastHits[i];
+      result.fastMismatches += a.has_value() != b.has_value() || (a && (a->primitive != b->primitive || a->t != b->t));
     }
+  }
+}
+
+// Embree's speed on a set, and where task 3 disagrees with it. Agreement: the
+// same hit or miss; hits on different triangles count only when their
+// distances differ too (ties on shared edges are fine). Where they disagree,
+// double precision decides who is right: a hit Embree's default
+// (non-watertight) mode misses is Embree's, not a mismatch.
+void measureEmbree([[maybe_unused]] const BvhRun& run, [[maybe_unused]] const RaySet& set,
+                   [[maybe_unused]] const Task3Run& task3, [[maybe_unused]] SetResult& result) {
 #ifdef PATHLAB_HAVE_EMBREE
-    std::vector<std::optional<PrimitiveHit>> embreeHits(set.rays.size());
-    std::vector<uint8_t> embreeBlocked(set.rays.size());
-    auto withEmbree = [&](size_t i) {
-      if (set.occlusion) embreeBlocked[i] = embree->occluded(set.rays[i], set.ranges[i]);
-      else embreeHits[i] = embree->intersect(set.rays[i], set.ranges[i]);
-    };
-    result.embree1 = mraysPerSecond(set.rays.size(), 1, withEmbree);
-    result.embreeN = mraysPerSecond(set.rays.size(), threads, withEmbree);
-    // Agreement: same hit or miss; hits on different triangles count only
-    // when their distances differ too (ties on shared edges are fine). Where
-    // they disagree, double precision decides who is right: a hit Embree's
-    // default (non-watertight) mode misses is Embree's, not a mismatch.
-    size_t mismatches = 0, embreeMisses = 0;
-    auto confirmed = [&](size_t i, const std::optional<PrimitiveHit>& hit) {
-      return hit && hitsInDouble(scene, set.rays[i], hit->primitive, hit->t);
-    };
-    for (size_t i = 0; i < set.rays.size(); ++i) {
-      if (set.occlusion) {
-        mismatches += blocked[i] != embreeBlocked[i];
-        continue;
-      }
-      const auto &ours = hits[i], &theirs = embreeHits[i];
-      const bool agree = ours.has_value() == theirs.has_value() &&
-                         (!ours || ours->primitive == theirs->primitive || std::abs(ours->t - theirs->t) <= 1e-4f * ours->t);
-      if (agree) continue;
-      const bool oursNearer = ours && (!theirs || ours->t < theirs->t);
-      if (oursNearer && confirmed(i, ours)) ++embreeMisses;
-      else ++mismatches;
+  std::vector<std::optional<PrimitiveHit>> embreeHits(set.rays.size());
+  std::vector<uint8_t> embreeBlocked(set.rays.size());
+  auto withEmbree = [&](size_t i) {
+    if (set.occlusion)
+      embreeBlocked[i] = run.embree->occluded(set.rays[i], set.ranges[i]);
+    else
+      embreeHits[i] = run.embree->intersect(set.rays[i], set.ranges[i]);
+  };
+  result.embree1 = mraysPerSecond(set.rays.size(), 1, withEmbree);
+  result.embreeN = mraysPerSecond(set.rays.size(), run.threads, withEmbree);
+  size_t mismatches = 0, embreeMisses = 0;
+  auto confirmed = [&](size_t i, const std::optional<PrimitiveHit>& hit) {
+    return hit && hitsInDouble(run.scene, set.rays[i], hit->primitive, hit->t);
+  };
+  for (size_t i = 0; i < set.rays.size(); ++i) {
+    if (set.occlusion) {
+      mismatches += task3.blocked[i] != embreeBlocked[i];
+      continue;
     }
-    result.mismatches = mismatches;
-    result.embreeMisses = embreeMisses;
+    const auto &ours = task3.hits[i], &theirs = embreeHits[i];
+    const bool agree = ours.has_value() == theirs.has_value() && (!ours || ours->primitive == theirs->primitive ||
+                                                                  std::abs(ours->t - theirs->t) <= 1e-4f * ours->t);
+    if (agree) continue;
+    const bool oursNearer = ours && (!theirs || ours->t < theirs->t);
+    if (oursNearer && confirmed(i, ours))
+      ++embreeMisses;
+    else
+      ++mismatches;
+  }
+  result.mismatches = mismatches;
+  result.embreeMisses = embreeMisses;
 #endif
+}
+
+}  // namespace
+
+int runBvhBench(const BvhBenchOptions& options) {
+  BvhRun run(options);
+  // Whose BVH this is: task 3 as linked (and task 2's triangle test in the leaves).
+  run.tasks = linkedTasks();
+  run.label = run.tasks[3] == Code::Yours ? "yours" : run.tasks[3] == Code::Reference ? "reference" : "task 3";
+  run.shortLabel = run.tasks[3] == Code::Reference ? "ref" : run.label;
+  run.threads = options.threads > 0 ? options.threads : defaultThreadCount();
+  run.scene = loadMesh(options.mesh, options.triangles, run.description);
+  if (run.scene.meshes.size() != 1 || !run.scene.spheres.empty()) {
+    throw Error("pathlab-bench bvh: expected one triangle mesh");
+  }
+  buildTask3(run);
+  if (!options.task3SpeedOut.empty()) {
+    writeTask3Speed(run);
+    return 0;
+  }
+  buildOthers(run);
+  run.sets = makeRaySets(run.scene, run.bvh, run.geometry);
+  run.results.resize(run.sets.size());
+  for (size_t s = 0; s < run.sets.size(); ++s) {
+    const Task3Run task3 = runTask3(run.sets[s], run.bvh, run.geometry, run.threads);
+    run.results[s].task1 = task3.mrays1;
+    run.results[s].taskN = task3.mraysN;
+    measureFastPath(run, run.sets[s], task3, run.results[s]);
+    measureEmbree(run, run.sets[s], task3, run.results[s]);
   }
 
   // Report. Every "ref"/"yours" names task 3 as linked, whose code it is.
-  std::printf("code: task 3 (BVH) %s, task 2 (triangle test in the leaves) %s\n", codeName(tasks[3]),
-              codeName(tasks[2]));
-  std::printf("mesh: %s, %zu triangles\n", description.c_str(), triangles);
-  std::printf("build, 1 thread: %s %.1f ms", label.c_str(), buildTask * 1e3);
-  if (buildEmbree) {
-    std::printf(", Embree %.1f ms (%s/Embree time %.2f)", *buildEmbree * 1e3, label.c_str(), buildTask / *buildEmbree);
-  }
-  std::printf("\n%s", formatBvhStatistics(bvhStatistics(bvh)).c_str());
-  // The tree alone, walked by the framework on the primary rays: the score a student can act on (and
-  // the grader's leaderboard measure), whatever their traversal does.
-  const TreeCost cost = treeCost(bvh, geometry, sets[0].rays);
-  std::printf("score of %s tree on the primary rays (lower is better): %s\n", label == "reference" ? "the reference's" : label == "yours" ? "your" : "task 3's",
-              formatTreeCost(cost).c_str());
-  std::printf("fast path layout: +%.1f ms to gather the leaves and collapse (%s + layout", buildWide * 1e3,
-              label.c_str());
-  if (buildEmbree) std::printf(" / Embree time %.2f", (buildTask + buildWide) / *buildEmbree);
-  std::printf("), %zu %d-wide nodes, %zu triangle packets, %.0f %% of lanes used\n", wide.nodeCount(),
-              WideBvh::kWidth, wide.packetCount(), 100.0 * wide.laneOccupancy());
-  std::printf("%-29s%-26s%s\n", "", "1 thread", std::to_string(threads).append(" threads").c_str());
-  std::printf("%-8s %8s %8s | %7s %7s %7s | %7s %7s %7s | %s\n", "rays", "count", "", shortLabel.c_str(), "Embree",
-              "ratio", shortLabel.c_str(), "Embree", "ratio", "mismatches");
-  auto cell = [](std::optional<double> v) {
-    char b[16];
-    if (v) std::snprintf(b, sizeof b, "%7.2f", *v);
-    else std::snprintf(b, sizeof b, "%7s", "-");
-    return std::string(b);
-  };
+  const TreeCost cost = treeCost(run.bvh, run.geometry, run.sets[0].rays);
+  printBuilds(run, cost);
   Json json;
-  for (size_t s = 0; s < sets.size(); ++s) {
-    const SetResult& r = results[s];
-    const std::optional<double> ratio1 = ratioTo(r.task1, r.embree1), ratioN = ratioTo(r.taskN, r.embreeN);
-    std::printf("%-8s %8zu %8s | %s %s %s | %s %s %s | %s\n", sets[s].name, sets[s].rays.size(), "Mrays/s",
-                cell(r.task1).c_str(), cell(r.embree1).c_str(), cell(ratio1).c_str(), cell(r.taskN).c_str(),
-                cell(r.embreeN).c_str(), cell(ratioN).c_str(),
-                r.mismatches ? std::to_string(*r.mismatches).c_str() : "-");
-    json[sets[s].name] = {{"task3_mrays", r.task1},
-                          {"embree_mrays", r.embree1 ? Json(*r.embree1) : Json(nullptr)},
-                          {"ratio", ratio1 ? Json(*ratio1) : Json(nullptr)},
-                          {"mismatches", r.mismatches ? Json(*r.mismatches) : Json(nullptr)},
-                          {"embree_misses", r.embreeMisses},
-                          {"task3_mrays_threads", r.taskN},
-                          {"embree_mrays_threads", r.embreeN ? Json(*r.embreeN) : Json(nullptr)}};
-  }
-  // The framework's render path walks task 3's tree; its hits must be task 3's, exactly.
-  std::printf("fast path (--accel fast: the same tree %d-wide, %s)\n", WideBvh::kWidth,
-              wide.usesAvx2() ? "eight boxes or triangles per AVX2 test" : "four boxes or triangles per SSE2 test");
-  for (size_t s = 0; s < sets.size(); ++s) {
-    const SetResult& r = results[s];
-    const std::optional<double> ratio1 = ratioTo(r.fast1, r.embree1), ratioN = ratioTo(r.fastN, r.embreeN);
-    std::printf("%-8s %8zu %8s | %s %s %s | %s %s %s | %zu vs task 3\n", sets[s].name, sets[s].rays.size(), "Mrays/s",
-                cell(r.fast1).c_str(), cell(r.embree1).c_str(), cell(ratio1).c_str(), cell(r.fastN).c_str(),
-                cell(r.embreeN).c_str(), cell(ratioN).c_str(), r.fastMismatches);
-    json[sets[s].name]["fast_mrays"] = r.fast1;
-    json[sets[s].name]["fast_mrays_threads"] = r.fastN;
-    json[sets[s].name]["fast_ratio"] = ratio1 ? Json(*ratio1) : Json(nullptr);
-    json[sets[s].name]["fast_mismatches_vs_task3"] = r.fastMismatches;
-  }
-  // The student's task 3 against the reference's, same mesh, same machine, one run.
-  if (tasks[3] == Code::Yours) {
-    std::string why;
-    if (const std::optional<Json> reference = referenceTask3Speed(options, threads, why)) {
-      std::printf("the reference's task 3 on the same mesh and view (%s):\n", "pathlab-bench-reference");
-      Json comparison;
-      for (size_t s = 0; s < sets.size(); ++s) {
-        const Json& theirs = (*reference)[sets[s].name];
-        const double ref1 = theirs.value("task3_mrays", 0.0), refN = theirs.value("task3_mrays_threads", 0.0);
-        const size_t refRays = theirs.value("rays", size_t(0));
-        const SetResult& r = results[s];
-        // Shadow and diffuse rays start at the primary rays' hits: other hits, other rays.
-        const bool sameRays = refRays == sets[s].rays.size() && refRays > 0 && ref1 > 0.0 && refN > 0.0;
-        const std::optional<double> ratio1 = sameRays ? ratioTo(r.task1, ref1) : std::nullopt;
-        const std::optional<double> ratioN = sameRays ? ratioTo(r.taskN, refN) : std::nullopt;
-        std::printf("%-8s %8zu %8s | %7.2f %7s %s | %7.2f %7s %s | %s\n", sets[s].name, refRays, "Mrays/s", ref1, "",
-                    cell(ratio1).c_str(), refN, "", cell(ratioN).c_str(),
-                    sameRays ? "yours / reference"
-                             : ("not the same rays (yours " + std::to_string(sets[s].rays.size()) +
-                                "): your hits differ from the reference's").c_str());
-        comparison[sets[s].name] = {{"rays", refRays}, {"reference_mrays", ref1}, {"reference_mrays_threads", refN},
-                                    {"ratio", ratio1 ? Json(*ratio1) : Json(nullptr)}};
-      }
-      json["reference_task3"] = comparison;
-    } else {
-      std::printf("the reference's task 3: not measured: %s\n", why.c_str());
-      json["reference_task3"] = nullptr;
-    }
-  }
-  for (size_t s = 0; s < sets.size(); ++s) {
-    if (results[s].embreeMisses == 0) continue;
+  printSpeeds(run, json);
+  if (run.tasks[3] == Code::Yours) json["reference_task3"] = compareWithReferenceTask3(run);
+  for (size_t s = 0; s < run.sets.size(); ++s) {
+    if (run.results[s].embreeMisses == 0) continue;
     std::printf("%s: Embree missed %zu hits that task 3 (%s) found and double precision confirms "
-                "(Embree's default mode is not watertight)\n", sets[s].name, results[s].embreeMisses, label.c_str());
+                "(Embree's default mode is not watertight)\n",
+                run.sets[s].name, run.results[s].embreeMisses, run.label.c_str());
   }
   // Whose code ran: "yours" (the student's file), "reference" (solutions/)
   // or "unknown" (a binary built without the record); ratios are task 3 / Embree.
-  json["task3"] = codeName(tasks[3]);
-  json["tree_cost"] = {{"nodes_per_ray", cost.nodesPerRay}, {"primitive_tests_per_ray", cost.primitiveTestsPerRay},
-                       {"score", cost.score()}, {"sah_cost", sahCost(bvh)}};
-  json["tasks"] = tasksJson(tasks, {2, 3});
-  json["build_ms_task3"] = buildTask * 1e3;
-  json["build_ms_embree"] = buildEmbree ? Json(*buildEmbree * 1e3) : Json(nullptr);
-  json["build_ms_fast_collapse"] = buildWide * 1e3;
-  json["fast_lane_occupancy"] = wide.laneOccupancy();
-  json["fast_box_test"] = wide.usesAvx2() ? "avx2" : "baseline";
-  json["triangles"] = triangles;
-  json["threads"] = threads;
+  json["task3"] = codeName(run.tasks[3]);
+  json["tree_cost"] = {{"nodes_per_ray", cost.nodesPerRay},
+                       {"primitive_tests_per_ray", cost.primitiveTestsPerRay},
+                       {"score", cost.score()},
+                       {"sah_cost", sahCost(run.bvh)}};
+  json["tasks"] = tasksJson(run.tasks, {2, 3});
+  json["build_ms_task3"] = run.buildTask * 1e3;
+  json["build_ms_embree"] = run.buildEmbree ? Json(*run.buildEmbree * 1e3) : Json(nullptr);
+  json["build_ms_fast_collapse"] = run.buildWide * 1e3;
+  json["fast_lane_occupancy"] = run.wide.laneOccupancy();
+  json["fast_box_test"] = run.wide.usesAvx2() ? "avx2" : "baseline";
+  json["triangles"] = run.scene.triangleCount();
+  json["threads"] = run.threads;
   if (options.json) std::printf("%s\n", json.dump().c_str());
   return 0;
 }
