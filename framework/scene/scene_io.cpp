@@ -206,177 +206,206 @@ Material parseMaterial(const Source& source, const Json& j, const std::string& p
 
 // ---- the whole scene ------------------------------------------------------------
 
+// The "media" object, name: medium; each one's index by its name.
+MediumNames parseMedia(const Source& source, const Object& top, Scene& scene) {
+  MediumNames mediumIndex;
+  if (!top.has("media")) return mediumIndex;
+  const Json& media = top.at("media");
+  if (!media.is_object()) top.fail("media", "expected an object of name: medium, got " + describe(media));
+  for (const auto& [name, value] : media.items()) {
+    mediumIndex[name] = MediumIndex(scene.media.size());
+    scene.media.push_back(parseMedium(source, value, "media." + name, name));
+  }
+  return mediumIndex;
+}
+
+// The "materials" object, name: material, and each shape's "material" by
+// name (none: a "default" material, made the first time one is needed).
+class MaterialNames {
+ public:
+  MaterialNames(const Source& source, const Object& top, const MediumNames& mediumIndex, Scene& scene) : scene_(scene) {
+    if (!top.has("materials")) return;
+    const Json& materials = top.at("materials");
+    if (!materials.is_object()) top.fail("materials", "expected an object of name: material, got " + describe(materials));
+    for (const auto& [name, value] : materials.items()) {
+      index_[name] = uint32_t(scene.materials.size());
+      scene.materials.push_back(parseMaterial(source, value, "materials." + name, name, mediumIndex));
+    }
+  }
+
+  uint32_t of(const Object& o) {
+    if (!o.has("material")) {
+      if (!index_.count("default")) {
+        index_["default"] = uint32_t(scene_.materials.size());
+        scene_.materials.push_back(Material{.name = "default"});
+      }
+      return index_["default"];
+    }
+    std::string name = o.string("material", "");
+    auto it = index_.find(name);
+    if (it == index_.end()) {
+      std::string known;
+      for (const auto& entry : index_) known += (known.empty() ? "" : ", ") + inQuotes(entry.first);
+      o.fail(o.field("material"), "unknown material " + inQuotes(name) +
+                                      (known.empty() ? " (the scene defines no materials)" : " (defined: " + known + ")"));
+    }
+    return it->second;
+  }
+
+ private:
+  Scene& scene_;
+  std::map<std::string, uint32_t> index_;
+};
+
+void parseSpheres(const Source& source, const Object& top, MaterialNames& materials, Scene& scene) {
+  if (!top.has("spheres")) return;
+  const Json& spheres = top.array("spheres");
+  for (size_t i = 0; i < spheres.size(); ++i) {
+    Object o(source, spheres[i], indexed("spheres", i), {"center", "radius", "material"});
+    Sphere s;
+    s.center = o.vec3("center", s.center);
+    s.radius = o.positive("radius", s.radius);
+    s.material = materials.of(o);
+    scene.spheres.push_back(s);
+  }
+}
+
+// One entry of "meshes": exactly one shape (an OBJ file, inline positions and
+// triangles, a quad, a bumpy sphere or a coil), transformed, checked.
+TriangleMesh parseMesh(const Source& source, const Object& o, const std::string& field) {
+  int shapes = int(o.has("obj")) + int(o.has("positions") || o.has("triangles")) + int(o.has("quad")) +
+               int(o.has("bumpy_sphere")) + int(o.has("coil"));
+  if (shapes != 1) {
+    o.fail(field,
+           "expected exactly one of \"obj\", \"positions\"+\"triangles\", \"quad\", \"bumpy_sphere\" or \"coil\"");
+  }
+  TriangleMesh mesh;
+  if (o.has("obj")) {
+    mesh = loadObj(o, o.string("obj", ""));
+  } else if (o.has("quad")) {
+    mesh = quadMesh(o);
+  } else if (o.has("bumpy_sphere")) {
+    mesh = bumpySphereMesh(o);
+  } else if (o.has("coil")) {
+    mesh = coilMesh(o);
+  } else {
+    if (!o.has("positions") || !o.has("triangles")) {
+      o.fail(field, "an inline mesh needs both \"positions\" and \"triangles\"");
+    }
+    mesh = inlineMesh(o);
+  }
+  if (o.has("transform")) {
+    transformMesh(mesh, parseTransform(
+                            Object(source, o.at("transform"), o.field("transform"), {"translate", "rotate", "scale"})));
+  }
+  for (const Point3& p : mesh.positions) {
+    if (!isFinite(p)) o.fail(field, "a vertex position is not finite after the transform");
+  }
+  if (!hasArea(mesh)) o.fail(field, "every triangle of the mesh has zero area");
+  mesh.name = o.string("name", mesh.name.empty() ? field : mesh.name);
+  return mesh;
+}
+
+// "meshes", within the scene's triangle budget: planned from the entries
+// before any is made (so an over-budget scene fails before it fills memory),
+// then counted as they are made.
+void parseMeshes(const Source& source, const Object& top, MaterialNames& materials, Scene& scene) {
+  if (!top.has("meshes")) return;
+  const Json& meshes = top.array("meshes");
+  size_t planned = 0;
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    planned += plannedTriangles(meshes[i]);
+    if (planned > kMaxSceneTriangles) top.fail(indexed("meshes", i), overSceneBudget(planned));
+  }
+  size_t sceneTriangles = 0;
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    Object o(source, meshes[i], indexed("meshes", i),
+             {"name", "obj", "positions", "triangles", "normals", "quad", "bumpy_sphere", "coil", "material",
+              "transform"});
+    TriangleMesh mesh = parseMesh(source, o, indexed("meshes", i));
+    mesh.material = materials.of(o);
+    sceneTriangles += mesh.triangles.size();
+    if (sceneTriangles > kMaxSceneTriangles) o.fail(indexed("meshes", i), overSceneBudget(sceneTriangles));
+    scene.meshes.push_back(std::move(mesh));
+  }
+}
+
+void parsePointLights(const Source& source, const Object& top, Scene& scene) {
+  if (!top.has("lights")) return;
+  const Json& lights = top.array("lights");
+  for (size_t i = 0; i < lights.size(); ++i) {
+    Object o(source, lights[i], indexed("lights", i), {"type", "position", "intensity"});
+    std::string type = o.string("type", "point");
+    if (type != "point") {
+      o.fail(o.field("type"), "unknown light type " + inQuotes(type) +
+                                  " (expected \"point\"; area lights are meshes or spheres with an emissive material)");
+    }
+    PointLight light;
+    light.position = o.vec3("position", light.position);
+    light.intensity = o.color("intensity", light.intensity);
+    scene.pointLights.push_back(light);
+  }
+}
+
+// "environment": a constant colour, or an equirectangular image, times a scale.
+Environment parseEnvironment(const Source& source, const Object& o) {
+  Environment env;
+  env.color = o.color("color", env.color);
+  env.scale = o.number("scale", env.scale);
+  // Radiance times the sampling tables' weights must stay finite in float.
+  constexpr float kMaxRadiance = 1e12f;
+  if (!(env.scale >= 0.0f && env.scale <= kMaxRadiance)) {
+    o.fail(o.field("scale"), "expected a number from 0 to 1e12, got " + o.at("scale").dump());
+  }
+  if (!(maxComponent(env.color) <= kMaxRadiance)) o.fail(o.field("color"), "expected values from 0 to 1e12");
+  if (!o.has("image")) return env;
+  std::string file = o.string("image", "");
+  fs::path path = fs::path(file).is_absolute() ? fs::path(file) : source.baseDir / file;
+  env.imagePath = path.string();
+  bool hasAlpha = false;
+  try {
+    env.image = readImage(env.imagePath, &hasAlpha);
+  } catch (const Error& e) {
+    o.fail(o.field("image"), e.what());
+  }
+  if (hasAlpha) {  // a sky has no transparency: said, so alpha 0 cannot look like a bug in the renderer
+    printWarning(env.imagePath + ": the alpha channel is ignored; the colours are used as stored");
+  }
+  if (const size_t invalid = zeroInvalidRadiance(env.image)) {
+    printWarning(env.imagePath + ": " + std::to_string(invalid) +
+                 " texels are NaN, infinite or negative; they count as black");
+  }
+  return env;
+}
+
 Scene parseScene(const Source& source, const Json& root) {
   Object top(source, root, "",
              {"description", "camera", "render", "media", "medium", "materials", "spheres", "meshes", "lights",
               "environment"});
   Scene scene;
   scene.source = source.name;
-  if (top.has("camera")) scene.camera = parseCamera(Object(source, top.at("camera"), "camera",
-                                                           {"position", "look_at", "up", "vfov", "aperture_radius",
-                                                            "focal_distance"}));
+  if (top.has("camera")) {
+    scene.camera = parseCamera(Object(source, top.at("camera"), "camera",
+                                      {"position", "look_at", "up", "vfov", "aperture_radius", "focal_distance"}));
+  }
   if (top.has("render")) {
-    scene.render = parseRender(Object(source, top.at("render"), "render",
-                                      {"width", "height", "spp", "light_samples", "max_depth", "seed"}));
+    scene.render = parseRender(
+        Object(source, top.at("render"), "render", {"width", "height", "spp", "light_samples", "max_depth", "seed"}));
   }
-
-  MediumNames mediumIndex;
-  if (top.has("media")) {
-    const Json& media = top.at("media");
-    if (!media.is_object()) top.fail("media", "expected an object of name: medium, got " + describe(media));
-    for (const auto& [name, value] : media.items()) {
-      mediumIndex[name] = MediumIndex(scene.media.size());
-      scene.media.push_back(parseMedium(source, value, "media." + name, name));
-    }
-  }
+  const MediumNames mediumIndex = parseMedia(source, top, scene);
   if (top.has("medium")) scene.medium = mediumNamed(top, "medium", mediumIndex);
-
-  std::map<std::string, uint32_t> materialIndex;
-  if (top.has("materials")) {
-    const Json& materials = top.at("materials");
-    if (!materials.is_object()) top.fail("materials", "expected an object of name: material, got " + describe(materials));
-    for (const auto& [name, value] : materials.items()) {
-      materialIndex[name] = uint32_t(scene.materials.size());
-      scene.materials.push_back(parseMaterial(source, value, "materials." + name, name, mediumIndex));
-    }
-  }
-  auto materialFor = [&](const Object& o) -> uint32_t {
-    if (!o.has("material")) {
-      if (!materialIndex.count("default")) {
-        materialIndex["default"] = uint32_t(scene.materials.size());
-        scene.materials.push_back(Material{.name = "default"});
-      }
-      return materialIndex["default"];
-    }
-    std::string name = o.string("material", "");
-    auto it = materialIndex.find(name);
-    if (it == materialIndex.end()) {
-      std::string known;
-      for (const auto& entry : materialIndex) known += (known.empty() ? "" : ", ") + inQuotes(entry.first);
-      o.fail(o.field("material"), "unknown material " + inQuotes(name) +
-                                      (known.empty() ? " (the scene defines no materials)" : " (defined: " + known + ")"));
-    }
-    return it->second;
-  };
-
-  if (top.has("spheres")) {
-    const Json& spheres = top.array("spheres");
-    for (size_t i = 0; i < spheres.size(); ++i) {
-      Object o(source, spheres[i], indexed("spheres", i), {"center", "radius", "material"});
-      Sphere s;
-      s.center = o.vec3("center", s.center);
-      s.radius = o.positive("radius", s.radius);
-      s.material = materialFor(o);
-      scene.spheres.push_back(s);
-    }
-  }
-
-  if (top.has("meshes")) {
-    const Json& meshes = top.array("meshes");
-    size_t planned = 0;
-    for (size_t i = 0; i < meshes.size(); ++i) {
-      planned += plannedTriangles(meshes[i]);
-      if (planned > kMaxSceneTriangles) {
-        top.fail(indexed("meshes", i), overSceneBudget(planned));
-      }
-    }
-    size_t sceneTriangles = 0;
-    for (size_t i = 0; i < meshes.size(); ++i) {
-      Object o(source, meshes[i], indexed("meshes", i),
-               {"name", "obj", "positions", "triangles", "normals", "quad", "bumpy_sphere", "coil", "material",
-                "transform"});
-      int shapes = int(o.has("obj")) + int(o.has("positions") || o.has("triangles")) + int(o.has("quad")) +
-                   int(o.has("bumpy_sphere")) + int(o.has("coil"));
-      if (shapes != 1) {
-        o.fail(indexed("meshes", i), "expected exactly one of \"obj\", \"positions\"+\"triangles\", \"quad\", "
-                                     "\"bumpy_sphere\" or \"coil\"");
-      }
-      TriangleMesh mesh;
-      if (o.has("obj")) {
-        mesh = loadObj(o, o.string("obj", ""));
-      } else if (o.has("quad")) {
-        mesh = quadMesh(o);
-      } else if (o.has("bumpy_sphere")) {
-        mesh = bumpySphereMesh(o);
-      } else if (o.has("coil")) {
-        mesh = coilMesh(o);
-      } else {
-        if (!o.has("positions") || !o.has("triangles")) {
-          o.fail(indexed("meshes", i), "an inline mesh needs both \"positions\" and \"triangles\"");
-        }
-        mesh = inlineMesh(o);
-      }
-      if (o.has("transform")) {
-        transformMesh(mesh, parseTransform(Object(source, o.at("transform"), o.field("transform"),
-                                                   {"translate", "rotate", "scale"})));
-      }
-      for (const Point3& p : mesh.positions) {
-        if (!isFinite(p)) o.fail(indexed("meshes", i), "a vertex position is not finite after the transform");
-      }
-      if (!hasArea(mesh)) o.fail(indexed("meshes", i), "every triangle of the mesh has zero area");
-      mesh.name = o.string("name", mesh.name.empty() ? indexed("meshes", i) : mesh.name);
-      mesh.material = materialFor(o);
-      sceneTriangles += mesh.triangles.size();
-      if (sceneTriangles > kMaxSceneTriangles) {
-        o.fail(indexed("meshes", i), overSceneBudget(sceneTriangles));
-      }
-      scene.meshes.push_back(std::move(mesh));
-    }
-  }
-
-  if (top.has("lights")) {
-    const Json& lights = top.array("lights");
-    for (size_t i = 0; i < lights.size(); ++i) {
-      Object o(source, lights[i], indexed("lights", i), {"type", "position", "intensity"});
-      std::string type = o.string("type", "point");
-      if (type != "point") {
-        o.fail(o.field("type"), "unknown light type " + inQuotes(type) +
-                                    " (expected \"point\"; area lights are meshes or spheres with an emissive material)");
-      }
-      PointLight light;
-      light.position = o.vec3("position", light.position);
-      light.intensity = o.color("intensity", light.intensity);
-      scene.pointLights.push_back(light);
-    }
-  }
-
+  MaterialNames materials(source, top, mediumIndex, scene);
+  parseSpheres(source, top, materials, scene);
+  parseMeshes(source, top, materials, scene);
+  parsePointLights(source, top, scene);
   if (top.has("environment")) {
-    Object o(source, top.at("environment"), "environment", {"color", "image", "scale"});
-    Environment env;
-    env.color = o.color("color", env.color);
-    env.scale = o.number("scale", env.scale);
-    // Radiance times the sampling tables' weights must stay finite in float.
-    constexpr float kMaxRadiance = 1e12f;
-    if (!(env.scale >= 0.0f && env.scale <= kMaxRadiance)) {
-      o.fail(o.field("scale"), "expected a number from 0 to 1e12, got " + o.at("scale").dump());
-    }
-    if (!(maxComponent(env.color) <= kMaxRadiance)) o.fail(o.field("color"), "expected values from 0 to 1e12");
-    if (o.has("image")) {
-      std::string file = o.string("image", "");
-      fs::path path = fs::path(file).is_absolute() ? fs::path(file) : source.baseDir / file;
-      env.imagePath = path.string();
-      bool hasAlpha = false;
-      try {
-        env.image = readImage(env.imagePath, &hasAlpha);
-      } catch (const Error& e) {
-        o.fail(o.field("image"), e.what());
-      }
-      if (hasAlpha) {  // a sky has no transparency: said, so alpha 0 cannot look like a bug in the renderer
-        printWarning(env.imagePath + ": the alpha channel is ignored; the colours are used as stored");
-      }
-      if (const size_t invalid = zeroInvalidRadiance(env.image)) {
-        printWarning(env.imagePath + ": " + std::to_string(invalid) +
-                     " texels are NaN, infinite or negative; they count as black");
-      }
-    }
-    scene.environment = std::move(env);
+    scene.environment =
+        parseEnvironment(source, Object(source, top.at("environment"), "environment", {"color", "image", "scale"}));
   }
-
   scene.indexPrimitives();
   checkSceneLimits(scene);
   return scene;
 }
-
 
 }  // namespace
 
