@@ -111,7 +111,8 @@ float checkedLength(const char* flag, double value, double min) {
   return float(value);
 }
 
-int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atomic<bool>& rendering) {
+// The scene with the command line's changes to its settings and camera.
+Scene sceneFor(const RenderArgs& args) {
   Scene scene = loadSceneArg(args.scene);
   RenderSettings& settings = scene.render;
   if (args.spp) settings.samplesPerPixel = checkedCount("-s", *args.spp, 1, 1 << 20);
@@ -121,6 +122,11 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   applyResolution(settings, args.resolution, args.widthHeight);
   if (args.aperture) scene.camera.apertureRadius = checkedLength("--aperture", *args.aperture, 0.0);
   if (args.focalDistance) scene.camera.focalDistance = checkedLength("--focal-distance", *args.focalDistance, 1e-6);
+  return scene;
+}
+
+// The integrator, the tree's walk and the sampler, each checked.
+RenderOptions optionsFor(const RenderArgs& args, const Scene& scene, const std::atomic<bool>& cancel) {
   RenderOptions options;
   if (args.threads) options.threads = checkedCount("-t", *args.threads, 1, 1024);
   options.progress = !args.quiet;
@@ -143,32 +149,109 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   const std::optional<SampleSequence> sampler = sampleSequenceFromName(args.sampler);
   if (!sampler) throw Error("--sampler: unknown sampler " + inQuotes(args.sampler) + " (sobol, stratified, independent)");
   options.sampler = *sampler;
-  checkOutputFile("-o", args.output, OutputKind::Image);
+  return options;
+}
+
+// --adaptive's settings (task 11): -s the most a pixel may take, --min-spp
+// and --batch as given or task 11's defaults within it; nothing without it.
+std::optional<AdaptiveSettings> adaptiveFor(const RenderArgs& args, int most) {
   if (!args.adaptive && (args.minSpp || args.batch || args.sppMap)) {
     throw Error("--min-spp, --batch and --spp-map go with --adaptive TOLERANCE");
   }
+  if (!args.adaptive) return std::nullopt;
+  AdaptiveSettings adaptive;
+  adaptive.tolerance = *args.adaptive;
+  if (!(adaptive.tolerance > 0.0 && adaptive.tolerance <= 1e6)) {
+    throw Error("--adaptive: expected a tolerance in (0, 1e6], got " + std::to_string(*args.adaptive));
+  }
+  adaptive.maxSpp = uint32_t(most);
+  const AdaptiveSettings defaults;  // task 11's one set (adaptive_sampling.h)
+  adaptive.batch =
+      uint32_t(args.batch ? checkedCount("--batch", *args.batch, 1, most) : std::min(int(defaults.batch), most));
+  adaptive.minSpp =
+      uint32_t(args.minSpp ? checkedCount("--min-spp", *args.minSpp, 1, most)
+                           : std::max(int(adaptive.batch), std::min(int(defaults.minSpp), most) / int(adaptive.batch) *
+                                                               int(adaptive.batch)));
+  if (const std::string problem = adaptiveSettingsProblem(adaptive); !problem.empty()) {
+    char given[128];
+    std::snprintf(given, sizeof given, " (-s %u, --min-spp %u, --batch %u)", adaptive.maxSpp, adaptive.minSpp,
+                  adaptive.batch);
+    throw Error("--adaptive: " + problem + given);
+  }
+  return adaptive;
+}
+
+// --ref's image, read and checked before an hour of rendering, not after.
+std::optional<Image> referenceFor(const RenderArgs& args, const RenderSettings& settings) {
+  if (!args.reference) return std::nullopt;
+  Image reference = readImage(*args.reference);
+  if (reference.width != settings.width || reference.height != settings.height) {
+    throw Error("--ref: " + shown(*args.reference, 200) + " is " + std::to_string(reference.width) + "x" +
+                std::to_string(reference.height) + " but the render is " + std::to_string(settings.width) + "x" +
+                std::to_string(settings.height));
+  }
+  return reference;
+}
+
+// What a render says when it ends: its settings, its speed, whose tasks lit
+// it and, adaptive, how many samples the pixels took.
+void printRenderSummary(const RenderArgs& args, const Scene& scene, const RenderOptions& options,
+                        const RenderResult& result, const std::string& sppMapPath) {
+  const RenderSettings& settings = scene.render;
+  const RenderStats& stats = result.stats;
+  std::printf("%s: %dx%d, %d spp, %s integrator, %s traversal, %s samples, tasks %s\n", args.output.c_str(),
+              settings.width, settings.height, settings.samplesPerPixel, integratorName(options.integrator),
+              traversalName(options.traversal), sampleSequenceName(options.sampler), linkedTaskSummary());
+  std::printf("time %.3f s (BVH build %.1f ms), %s samples/s, %s rays/s\n", stats.seconds, stats.buildSeconds * 1e3,
+              formatRate(double(stats.samples) / stats.seconds).c_str(),
+              formatRate(double(stats.rays) / stats.seconds).c_str());
+  std::printf("lit by tasks %s\n", tasksLightingRender(scene, options.integrator).c_str());
+  if (options.adaptive) {
+    const SampleMap& map = result.sampleMap;
+    const size_t confident = size_t(std::count(map.confident.begin(), map.confident.end(), uint8_t(1)));
+    std::printf("adaptive (task 11, tolerance %g, batches of %u, %u to %u spp): mean %.1f spp, %.1f %% of pixels "
+                "confident, the rest at the maximum; spp map %s\n",
+                options.adaptive->tolerance, options.adaptive->batch, options.adaptive->minSpp,
+                options.adaptive->maxSpp, double(stats.samples) / double(map.samples.size()),
+                100.0 * double(confident) / double(map.samples.size()), sppMapPath.c_str());
+  }
+}
+
+// --stats: the render's numbers as JSON.
+nlohmann::json statsJson(const RenderArgs& args, const Scene& scene, const RenderOptions& options,
+                         const RenderStats& stats, const std::optional<ImageError>& error) {
+  const RenderSettings& settings = scene.render;
+  nlohmann::json j = {{"output", args.output},
+                      {"scene", scene.source},
+                      {"width", settings.width},
+                      {"height", settings.height},
+                      {"spp", stats.completedSpp},
+                      {"max_depth", settings.maxDepth},
+                      {"light_samples", settings.lightSamples},
+                      {"integrator", integratorName(options.integrator)},
+                      {"traversal", traversalName(options.traversal)},
+                      {"sampler", sampleSequenceName(options.sampler)},
+                      {"tasks", linkedTaskSummary()},
+                      {"threads", options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency())},
+                      {"seconds", stats.seconds},
+                      {"build_seconds", stats.buildSeconds},
+                      {"samples", stats.samples},
+                      {"rays", stats.rays},
+                      {"samples_per_second", double(stats.samples) / stats.seconds},
+                      {"rays_per_second", double(stats.rays) / stats.seconds},
+                      {"non_finite_samples", stats.nonFiniteSamples}};
+  if (error) j["vs_reference"] = {{"rmse", error->rmse}, {"rel_mse", error->relMse}};
+  return j;
+}
+
+int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atomic<bool>& rendering) {
+  const Scene scene = sceneFor(args);
+  const RenderSettings& settings = scene.render;
+  RenderOptions options = optionsFor(args, scene, cancel);
+  checkOutputFile("-o", args.output, OutputKind::Image);
+  options.adaptive = adaptiveFor(args, settings.samplesPerPixel);
   std::string sppMapPath;
-  if (args.adaptive) {
-    AdaptiveSettings adaptive;
-    adaptive.tolerance = *args.adaptive;
-    if (!(adaptive.tolerance > 0.0 && adaptive.tolerance <= 1e6)) {
-      throw Error("--adaptive: expected a tolerance in (0, 1e6], got " + std::to_string(*args.adaptive));
-    }
-    const int most = settings.samplesPerPixel;  // -s: the most a pixel may take
-    adaptive.maxSpp = uint32_t(most);
-    const AdaptiveSettings defaults;  // task 11's one set (adaptive_sampling.h)
-    adaptive.batch = uint32_t(args.batch ? checkedCount("--batch", *args.batch, 1, most)
-                                         : std::min(int(defaults.batch), most));
-    adaptive.minSpp = uint32_t(args.minSpp ? checkedCount("--min-spp", *args.minSpp, 1, most)
-                                           : std::max(int(adaptive.batch), std::min(int(defaults.minSpp), most) /
-                                                                               int(adaptive.batch) * int(adaptive.batch)));
-    if (const std::string problem = adaptiveSettingsProblem(adaptive); !problem.empty()) {
-      char given[128];
-      std::snprintf(given, sizeof given, " (-s %u, --min-spp %u, --batch %u)", adaptive.maxSpp, adaptive.minSpp,
-                    adaptive.batch);
-      throw Error("--adaptive: " + problem + given);
-    }
-    options.adaptive = adaptive;
+  if (options.adaptive) {
     sppMapPath = args.sppMap ? *args.sppMap : sppMapBeside(args.output);
     checkOutputFile("--spp-map", sppMapPath, OutputKind::Image);
   }
@@ -176,16 +259,7 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   if (args.reference && args.reference->empty()) throw Error("--ref: expected an image file name");
   checkDistinctFiles({{"-o", args.output}, {"--spp-map", sppMapPath}, {"--stats", args.stats.value_or("")},
                       {"--ref", args.reference.value_or("")}});
-  std::optional<Image> reference;  // read and checked before an hour of rendering, not after
-  if (args.reference) {
-    reference = readImage(*args.reference);
-    if (reference->width != settings.width || reference->height != settings.height) {
-      throw Error("--ref: " + shown(*args.reference, 200) + " is " + std::to_string(reference->width) + "x" +
-                  std::to_string(reference->height) + " but the render is " + std::to_string(settings.width) + "x" +
-                  std::to_string(settings.height));
-    }
-  }
-
+  const std::optional<Image> reference = referenceFor(args, settings);
   std::ofstream statsFile;  // opened before an hour of rendering, not after
   if (args.stats) {
     statsFile.open(*args.stats);
@@ -195,9 +269,8 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
   rendering.store(true);
   RenderResult result = render(scene, options);
   const RenderStats& stats = result.stats;
-  writeImage(result.image, args.output, {{"pathlab:spp", std::to_string(stats.completedSpp)},
-                                         {"pathlab:scene", scene.source}});
-
+  writeImage(result.image, args.output,
+             {{"pathlab:spp", std::to_string(stats.completedSpp)}, {"pathlab:scene", scene.source}});
   if (options.adaptive) {
     writeImage(sampleMapImage(result.sampleMap, options.adaptive->minSpp, options.adaptive->maxSpp), sppMapPath);
   }
@@ -211,42 +284,14 @@ int runRender(const RenderArgs& args, const std::atomic<bool>& cancel, std::atom
                  stats.completedSpp, settings.samplesPerPixel);
     return 130;
   }
-  if (!args.quiet) {
-    std::printf("%s: %dx%d, %d spp, %s integrator, %s traversal, %s samples, tasks %s\n", args.output.c_str(),
-                settings.width, settings.height, settings.samplesPerPixel, integratorName(options.integrator),
-                traversalName(options.traversal), sampleSequenceName(options.sampler), linkedTaskSummary());
-    std::printf("time %.3f s (BVH build %.1f ms), %s samples/s, %s rays/s\n", stats.seconds, stats.buildSeconds * 1e3,
-                formatRate(double(stats.samples) / stats.seconds).c_str(),
-                formatRate(double(stats.rays) / stats.seconds).c_str());
-    std::printf("lit by tasks %s\n", tasksLightingRender(scene, options.integrator).c_str());
-    if (options.adaptive) {
-      const SampleMap& map = result.sampleMap;
-      const size_t confident = size_t(std::count(map.confident.begin(), map.confident.end(), uint8_t(1)));
-      std::printf("adaptive (task 11, tolerance %g, batches of %u, %u to %u spp): mean %.1f spp, %.1f %% of pixels "
-                  "confident, the rest at the maximum; spp map %s\n",
-                  options.adaptive->tolerance, options.adaptive->batch, options.adaptive->minSpp,
-                  options.adaptive->maxSpp, double(stats.samples) / double(map.samples.size()),
-                  100.0 * double(confident) / double(map.samples.size()), sppMapPath.c_str());
-    }
-  }
+  if (!args.quiet) printRenderSummary(args, scene, options, result, sppMapPath);
   std::optional<ImageError> error;
   if (reference) {
     error = compareImages(result.image, *reference);
     std::printf("vs %s: RMSE %.6g, relMSE %.6g\n", args.reference->c_str(), error->rmse, error->relMse);
   }
   if (args.stats) {
-    nlohmann::json j = {{"output", args.output}, {"scene", scene.source}, {"width", settings.width},
-                        {"height", settings.height}, {"spp", stats.completedSpp}, {"max_depth", settings.maxDepth},
-                        {"light_samples", settings.lightSamples}, {"integrator", integratorName(options.integrator)},
-                        {"traversal", traversalName(options.traversal)},
-                        {"sampler", sampleSequenceName(options.sampler)}, {"tasks", linkedTaskSummary()},
-                        {"threads", options.threads > 0 ? options.threads : int(std::thread::hardware_concurrency())}, {"seconds", stats.seconds},
-                        {"build_seconds", stats.buildSeconds}, {"samples", stats.samples}, {"rays", stats.rays},
-                        {"samples_per_second", double(stats.samples) / stats.seconds},
-                        {"rays_per_second", double(stats.rays) / stats.seconds},
-                        {"non_finite_samples", stats.nonFiniteSamples}};
-    if (error) j["vs_reference"] = {{"rmse", error->rmse}, {"rel_mse", error->relMse}};
-    statsFile << j.dump(2) << "\n";
+    statsFile << statsJson(args, scene, options, stats, error).dump(2) << "\n";
     if (!statsFile.flush()) throw Error("--stats " + shown(*args.stats, 200) + ": cannot write it");
   }
   return 0;
