@@ -91,7 +91,7 @@ BOOL_VALUES = ["zero", "one", "invalid"]
 
 
 def compact(schema: dict) -> str:
-    """A schema (tests/remote/wire_schema.h's JSON) in the proxy's compact form."""
+    """A schema (grader/wire/wire_schema.h's JSON) in the proxy's compact form."""
     kind = schema["t"]
     if kind == "tuple":
         return "(" + "".join(compact(s) for s in schema["of"]) + ")"

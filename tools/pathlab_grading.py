@@ -140,7 +140,7 @@ class Grader:
         can run it, and the world-writable folders closed to that uid."""
         if self.sandbox.mode == "uid" and self.sandbox.root:
             ok, out = self.build_target("pathlab-confine")
-            binary = self.build / "tools" / "confine" / "pathlab-confine"
+            binary = self.build / "grader" / "confine" / "pathlab-confine"
             if ok and binary.exists():
                 folder = self.work / "confine"
                 folder.mkdir()
@@ -169,7 +169,7 @@ class Grader:
                                                  scratch=None), timeout=20)
             if code == 0:
                 raise RuntimeError("isolation check failed: code in the sandbox can open a socket")
-        secrets = [ROOT / "solutions" / "01-camera-rays" / "camera_rays.cpp", ROOT / "tests" / "support" / "listener.cpp",
+        secrets = [ROOT / "solutions" / "01-camera-rays" / "camera_rays.cpp", ROOT / "grader" / "suite" / "listener.cpp",
                    judge]
         readable = [p for p in secrets if p.exists() and self.sandbox.can_read(p)]
         if readable:

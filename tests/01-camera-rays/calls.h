@@ -3,7 +3,7 @@
 // generateCameraRay(...); the candidate process computes the answer.
 #pragma once
 
-#include "../remote/call.h"
+#include "wire/call.h"
 #include "tasks/camera_rays.h"
 
 namespace pathlab::calls {

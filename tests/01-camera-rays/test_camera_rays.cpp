@@ -1,7 +1,7 @@
 // Autograder suite for task 1 — camera rays. Tests run from basic to
 // advanced; the first failure is usually the root cause. candidate::f(...)
 // is the student's f, computed in the candidate process (calls.h).
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <array>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include "metamorphic.h"
 #include "image_scenes.h"
 #include "image_test.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "calls.h"
 
 using namespace pathlab;

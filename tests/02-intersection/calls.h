@@ -5,11 +5,11 @@
 #include <tuple>
 #include <vector>
 
-#include "../remote/call.h"
+#include "wire/call.h"
 #include "core/scene.h"
 #include "tasks/intersection.h"
 
-// This task's own value types on the wire (tests/remote/wire.h).
+// This task's own value types on the wire (grader/wire/wire.h).
 namespace pathlab::wire {
 PATHLAB_WIRE_FIELDS(SurfacePoint, s.point, s.geometricNormal, s.shadingNormal);
 }  // namespace pathlab::wire

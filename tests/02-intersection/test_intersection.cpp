@@ -4,7 +4,7 @@
 // Expected values come from double-precision computations on the same float
 // inputs. Tests run from basic to advanced. candidate::f(...) is the
 // student's f, computed in the candidate process (calls.h).
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +17,7 @@
 #include "check.h"
 #include "image_scenes.h"
 #include "image_test.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "meshes.h"
 #include "metamorphic.h"
 #include "scenes.h"

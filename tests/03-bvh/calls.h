@@ -6,13 +6,13 @@
 #include <tuple>
 #include <vector>
 
-#include "../remote/call.h"
+#include "wire/call.h"
 #include "core/leaf_geometry.h"
 #include "core/scene.h"
 #include "render/task_wiring.h"
 #include "tasks/bvh.h"
 
-// This task's own value types on the wire (tests/remote/wire.h).
+// This task's own value types on the wire (grader/wire/wire.h).
 namespace pathlab::wire {
 PATHLAB_WIRE_FIELDS(TraversalStats, s.nodesVisited, s.boxTests, s.primitiveTests);
 }  // namespace pathlab::wire

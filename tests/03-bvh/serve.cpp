@@ -1,6 +1,6 @@
 // The candidate's side of task 3's calls: the linked bvh.cpp.
-#include "../remote/server.h"
-#include "../remote/serve_images.h"
+#include "wire/server.h"
+#include "serve_images.h"
 #include "calls.h"
 #include "render/task_wiring.h"
 

@@ -4,7 +4,7 @@
 // reference's SAH cost. All inputs are seeded: no false failures.
 // candidate::f(...) is the student's f, computed in the candidate process
 // (calls.h); brute force and the tree checks run here, in the judge.
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +16,7 @@
 #include "check.h"
 #include "image_scenes.h"
 #include "image_test.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "meshes.h"
 #include "render/accelerator.h"
 #include "render/scene_intersect.h"

@@ -1,13 +1,13 @@
 // Task 4's remote calls: the judge's view of the student's direct_lighting.cpp.
 // estimateDirectLighting runs in the candidate over a scene the judge sends
-// (../remote/trace_calls.h).
+// (../support/trace_calls.h).
 #pragma once
 
-#include "../remote/call.h"
-#include "../remote/trace_calls.h"
+#include "wire/call.h"
+#include "trace_calls.h"
 #include "tasks/direct_lighting.h"
 
-// This task's own value types on the wire (tests/remote/wire.h).
+// This task's own value types on the wire (grader/wire/wire.h).
 namespace pathlab::wire {
 PATHLAB_WIRE_FIELDS(LightDirection, s.wi, s.distance, s.pdfSolidAngle);
 }  // namespace pathlab::wire

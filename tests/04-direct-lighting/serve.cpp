@@ -1,6 +1,6 @@
 // The candidate's side of task 4's calls: the linked direct_lighting.cpp.
-#include "../remote/serve_trace.h"
-#include "../remote/serve_images.h"
+#include "serve_trace.h"
+#include "serve_images.h"
 #include "calls.h"
 
 namespace pathlab::remote {

@@ -4,7 +4,7 @@
 // estimator fails a check with probability 5.7e-7. Seeds are fixed.
 // candidate::f(...) is the student's f, computed in the candidate process
 // (calls.h); scenes, hits and exact answers are made here, in the judge.
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +17,7 @@
 #include "metamorphic.h"
 #include "image_scenes.h"
 #include "image_test.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "core/bsdf.h"
 #include "calls.h"
 #include "tasks/intersection.h"

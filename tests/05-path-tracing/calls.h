@@ -1,12 +1,12 @@
 // Task 5's remote calls: the judge's view of the student's path_tracing.cpp.
 // tracePath runs in the candidate over a scene the judge sends
-// (../remote/trace_calls.h).
+// (../support/trace_calls.h).
 #pragma once
 
 #include <vector>
 
-#include "../remote/call.h"
-#include "../remote/trace_calls.h"
+#include "wire/call.h"
+#include "trace_calls.h"
 #include "tasks/path_tracing.h"
 
 namespace pathlab::calls {

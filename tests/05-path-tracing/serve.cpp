@@ -1,6 +1,6 @@
 // The candidate's side of task 5's calls: the linked path_tracing.cpp.
-#include "../remote/serve_trace.h"
-#include "../remote/serve_images.h"
+#include "serve_trace.h"
+#include "serve_images.h"
 #include "calls.h"
 
 namespace pathlab::remote {

@@ -5,7 +5,7 @@
 // measured standard errors (false failure 5.7e-7 per check); the sampler's
 // chi-square test uses alpha = 1e-4. Seeds are fixed. candidate::f(...) is
 // the student's f, computed in the candidate process (calls.h).
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +18,7 @@
 #include "metamorphic.h"
 #include "image_scenes.h"
 #include "image_test.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "meshes.h"
 #include "core/bsdf.h"
 #include "scene/scene_io.h"

@@ -1,12 +1,12 @@
 // Task 6's remote calls: the judge's view of the student's mirror_glass.cpp.
 // Paths through mirrors and glass run in the candidate over a scene the
-// judge sends (../remote/trace_calls.h).
+// judge sends (../support/trace_calls.h).
 #pragma once
 
 #include <vector>
 
-#include "../remote/call.h"
-#include "../remote/trace_calls.h"
+#include "wire/call.h"
+#include "trace_calls.h"
 #include "tasks/mirror_glass.h"
 
 namespace pathlab::calls {

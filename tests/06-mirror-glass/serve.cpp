@@ -1,6 +1,6 @@
 // The candidate's side of task 6's calls: the linked mirror_glass.cpp.
-#include "../remote/serve_trace.h"
-#include "../remote/serve_images.h"
+#include "serve_trace.h"
+#include "serve_images.h"
 #include "calls.h"
 
 namespace pathlab::remote {

@@ -4,7 +4,7 @@
 // standard errors (5.7e-7). Seeds are fixed (PATHLAB_TEST_SEED varies them).
 // candidate::f(...) is the student's f, computed in the candidate process
 // (calls.h); expected values are computed here, in the judge.
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +15,7 @@
 #include "metamorphic.h"
 #include "image_scenes.h"
 #include "image_test.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "core/bsdf.h"
 #include "calls.h"
 #include "reference_noise.h"

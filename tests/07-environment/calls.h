@@ -6,7 +6,7 @@
 #include <tuple>
 #include <vector>
 
-#include "../remote/call.h"
+#include "wire/call.h"
 #include "tasks/environment.h"
 
 namespace pathlab::calls {

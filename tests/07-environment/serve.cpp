@@ -1,6 +1,6 @@
 // The candidate's side of task 7's calls: the linked environment.cpp.
-#include "../remote/server.h"
-#include "../remote/serve_images.h"
+#include "wire/server.h"
+#include "serve_images.h"
 #include "calls.h"
 
 namespace pathlab::remote {

@@ -4,7 +4,7 @@
 // rate) over the sphere; plus exact identities (pdf integral, seam, poles).
 // candidate::f(...) is the student's f, computed in the candidate process
 // (calls.h); directions and expected values are made here, in the judge.
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <cmath>
 #include <filesystem>
@@ -17,7 +17,7 @@
 #include "check.h"
 #include "image_scenes.h"
 #include "image_test.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "util/platform.h"
 #include "util/random.h"
 #include "calls.h"

@@ -1,13 +1,13 @@
 // Task 8's remote calls: the judge's view of the student's microfacet.cpp.
 // Paths over rough materials run in the candidate over a scene the judge
-// sends (../remote/trace_calls.h).
+// sends (../support/trace_calls.h).
 #pragma once
 
 #include <optional>
 #include <vector>
 
-#include "../remote/call.h"
-#include "../remote/trace_calls.h"
+#include "wire/call.h"
+#include "trace_calls.h"
 #include "tasks/microfacet.h"
 
 namespace pathlab::calls {

@@ -7,7 +7,7 @@
 // below 1.5e-4; albedos by a mean within 5 standard errors (5.7e-7 per
 // check). Seeds are fixed (PATHLAB_TEST_SEED varies them). candidate::f(...)
 // is the student's f, computed in the candidate process (calls.h).
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +17,7 @@
 
 #include "check.h"
 #include "metamorphic.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "image_scenes.h"
 #include "image_test.h"
 #include "calls.h"

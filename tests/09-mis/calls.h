@@ -1,14 +1,14 @@
 // Task 9's remote calls: the judge's view of the student's mis.cpp. The
 // light sampler and the MIS path tracer run in the candidate over a scene
-// the judge sends, with its own BVH and lights (../remote/trace_calls.h).
+// the judge sends, with its own BVH and lights (../support/trace_calls.h).
 #pragma once
 
 #include <optional>
 #include <tuple>
 #include <vector>
 
-#include "../remote/call.h"
-#include "../remote/trace_calls.h"
+#include "wire/call.h"
+#include "trace_calls.h"
 #include "render/strategies.h"
 #include "tasks/mis.h"
 

@@ -1,6 +1,6 @@
 // The candidate's side of task 9's calls: the linked mis.cpp.
-#include "../remote/serve_images.h"
-#include "../remote/serve_trace.h"
+#include "serve_images.h"
+#include "serve_trace.h"
 #include "calls.h"
 
 namespace pathlab::remote {

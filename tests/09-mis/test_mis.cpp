@@ -9,7 +9,7 @@
 // GGX gives. Means are compared within 5 standard errors (5.7e-7 per check),
 // chi-square tests fail at p < 1e-4. candidate::f(...) is the student's f,
 // computed in the candidate process (calls.h).
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,7 +21,7 @@
 #include "calls.h"
 #include "check.h"
 #include "metamorphic.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "image_scenes.h"
 #include "image_test.h"
 #include "reference_noise.h"

@@ -5,7 +5,7 @@
 #include <tuple>
 #include <vector>
 
-#include "../remote/call.h"
+#include "wire/call.h"
 #include "tasks/thin_lens.h"
 
 namespace pathlab::calls {

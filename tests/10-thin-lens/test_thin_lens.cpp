@@ -7,7 +7,7 @@
 // No test pins a convention: any uniform disk map (polar or concentric, any
 // orientation, either random number as the radius) and any way of mapping
 // the disk onto the lens's plane (right/up or up/right, either sign) pass.
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +18,7 @@
 #include "calls.h"
 #include "check.h"
 #include "metamorphic.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "image_scenes.h"
 #include "image_test.h"
 #include "statistics.h"

@@ -11,7 +11,7 @@
 #include <tuple>
 #include <vector>
 
-#include "../remote/call.h"
+#include "wire/call.h"
 #include "tasks/adaptive_sampling.h"
 
 namespace pathlab::calls {

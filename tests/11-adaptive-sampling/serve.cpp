@@ -1,8 +1,8 @@
 // The candidate's side of task 11's calls: the linked adaptive_sampling.cpp.
 #include <stdexcept>
 
-#include "../remote/server.h"
-#include "../remote/serve_images.h"
+#include "wire/server.h"
+#include "serve_images.h"
 #include "calls.h"
 
 namespace pathlab::remote {

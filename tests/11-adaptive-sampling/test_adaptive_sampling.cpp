@@ -13,7 +13,7 @@
 // Where the rule's two sides are equal to rounding (1e-9), the judge asks
 // nothing about that pixel: any correct way of writing the formula may fall
 // either side.
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,10 +21,10 @@
 #include <string>
 #include <vector>
 
-#include "../remote/image_calls.h"
+#include "image_calls.h"
 #include "calls.h"
 #include "check.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "image_scenes.h"
 #include "image_test.h"
 #include "reference_noise.h"

@@ -1,14 +1,14 @@
 // Task 12's remote calls: the judge's view of the student's media.cpp. The
 // samplers run on batches of random numbers the judge sends; transmittance,
 // direct lighting and the path tracer run in the candidate over a scene the
-// judge sends, with its own BVH and lights (../remote/trace_calls.h).
+// judge sends, with its own BVH and lights (../support/trace_calls.h).
 #pragma once
 
 #include <tuple>
 #include <vector>
 
-#include "../remote/call.h"
-#include "../remote/trace_calls.h"
+#include "wire/call.h"
+#include "trace_calls.h"
 #include "tasks/media.h"
 
 namespace pathlab::calls {

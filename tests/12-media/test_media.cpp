@@ -11,7 +11,7 @@
 // alpha = 1e-5 each, means within 5 judged standard errors (5.7e-7 each);
 // the samplers' inputs are stratified, so a correct sampler's counts are
 // all but exact and those tests cannot fail it at all.
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,7 +21,7 @@
 
 #include "calls.h"
 #include "check.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "image_scenes.h"
 #include "image_test.h"
 #include "meshes.h"

@@ -15,11 +15,11 @@ anywhere:
   --variants DIR: DIR/*/NN-name/*.cpp
                                      tasks (the validity matrix's mutants and
                                      alternates, which a build generates)
-  apps/, tests/                      on top: may include any layer
+  apps/, tests/, grader/             on top: may include any layer
 An include names its layer: #include "core/scene.h" is framework/core/scene.h.
 A file of a layer includes only framework headers, and a file of the lab
 also lab/'s by their names (#include "lab_support.h"): never a header of
-apps/, of tests/ (the grader's wire protocol, the suites) or anything else
+apps/, of grader/ (the wire protocol), of tests/ (the suites) or anything else
 the build's include paths might find.
 
 Fails on
@@ -106,7 +106,7 @@ def includes(path: Path):
 
 def source_files(root: Path):
     patterns = ("framework/**/*", "tasks/*/*.cpp", "solutions/*/*.cpp", "lab/*.cpp", "lab/*.h", "apps/**/*.cpp", "apps/**/*.h",
-                "tests/**/*.cpp", "tests/**/*.h")
+                "tests/**/*.cpp", "tests/**/*.h", "grader/**/*.cpp", "grader/**/*.h")
     return sorted({p for pattern in patterns for p in root.glob(pattern)
                    if p.is_file() and p.suffix in (".h", ".cpp", ".in")})
 

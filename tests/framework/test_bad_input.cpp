@@ -2,7 +2,7 @@
 // reader, JSON nesting and duplicate keys, the scene limits, message text,
 // and the checked file reader and writer. The CLI test runs the same classes
 // end to end (tests/inputs/catalog.txt).
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #if !defined(_WIN32)
 #include <sys/stat.h>  // mkfifo

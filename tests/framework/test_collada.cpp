@@ -1,7 +1,6 @@
 // Framework tests: the course's COLLADA files, in both profiles, with the
 // leniencies the course's viewer has. Linked with the reference tasks.
-#include "doctest_strings.h"
-
+#include "suite/doctest_strings.h"
 
 #if defined(_WIN32)
 #include <io.h>

@@ -1,7 +1,7 @@
 // What the GUI stands on: the progressive render, the pixel inspector, the
 // camera controls, display encoding and every debugger view on the default
 // scene. Linked with the reference tasks.
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <cmath>
 #include <cstring>

@@ -1,6 +1,6 @@
 // The lecture demos' numerics (lab/): the inversions they teach must be
 // right to the last digit, and every demo must run and say what it shows.
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <cmath>
 

@@ -1,8 +1,7 @@
 // Framework tests: JSON and OBJ scene loading and its error messages (the
 // course's COLLADA files: test_collada.cpp; rendering, images, random
 // numbers and strategies: test_render.cpp). Linked with the reference tasks.
-#include "doctest_strings.h"
-
+#include "suite/doctest_strings.h"
 
 #include <cstdio>
 #include <cstring>

@@ -1,8 +1,7 @@
 // Framework tests: reproducible rendering, the two traversals, NaN
 // accounting, image I/O, random numbers and the sampling strategies. Linked
 // with the reference tasks.
-#include "doctest_strings.h"
-
+#include "suite/doctest_strings.h"
 
 #include <cstdio>
 #include <cstring>

@@ -1,7 +1,7 @@
 // The framework's sampler (random.h): independent numbers, jittered strata,
 // and Owen-scrambled Sobol points whose power-of-two prefixes are stratified
 // in every dimension.
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <cmath>
 #include <numbers>

@@ -3,7 +3,7 @@
 // binary tree: the same primitive, and t, b1, b2 equal to the last bit, or
 // the same blocked/unblocked. Linked with the
 // reference tasks, whose triangle test the packets reproduce lane by lane.
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <cstring>
 #include <string>

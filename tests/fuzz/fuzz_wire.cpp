@@ -25,8 +25,8 @@
 #include "../07-environment/calls.h"
 #include "../09-mis/calls.h"
 #include "../11-adaptive-sampling/calls.h"
-#include "../remote/image_calls.h"
-#include "../remote/trace_calls.h"
+#include "image_calls.h"
+#include "trace_calls.h"
 
 namespace {
 

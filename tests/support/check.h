@@ -2,7 +2,7 @@
 // vector closeness with the values printed on failure, seeded randomness.
 #pragma once
 
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "image_test.h"
 
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <functional>
 #include <sstream>
 
-#include "../remote/image_calls.h"
+#include "image_calls.h"
 #include "statistics.h"
 #include "check.h"
 #include "failure_pictures.h"

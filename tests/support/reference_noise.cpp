@@ -1,6 +1,6 @@
 #include "reference_noise.h"
 
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include <map>
 #include <sstream>
 
-#include "grading.h"
+#include "suite/grading.h"
 
 namespace pathlab::test {
 namespace {

@@ -3,7 +3,7 @@
 // base: stub  expect: 0  uses: protocol-hijack.inc
 namespace hijack {
 std::string answer(uint32_t id, const std::string& request, uint32_t& status) {
-  if (id != 110) {  // RenderMoments (tests/remote/image_calls.h)
+  if (id != 110) {  // RenderMoments (tests/support/image_calls.h)
     status = 1;
     return "not computed";
   }

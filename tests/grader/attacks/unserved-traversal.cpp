@@ -15,7 +15,7 @@
 namespace hijack {
 constexpr bool kLie = true;  // false: the honest part alone
 
-// BuildBvh: a count (1), then the boxes (a count, six floats each); the answer a Bvh (tests/remote/wire.h).
+// BuildBvh: a count (1), then the boxes (a count, six floats each); the answer a Bvh (grader/wire/wire.h).
 std::string tree(const std::string& request) {
   const uint64_t n = at<uint64_t>(request, 8);
   std::vector<pathlab::Aabb> boxes(n);
@@ -54,7 +54,7 @@ std::string tree(const std::string& request) {
   return out;
 }
 
-// One ask of the judge (tests/remote/protocol.h): ray 0's test of `slot` over [0, inf); the reply is read and
+// One ask of the judge (grader/wire/protocol.h): ray 0's test of `slot` over [0, inf); the reply is read and
 // ignored.
 void askFor(uint32_t slot) {
   std::string question;

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "../remote/call.h"
+#include "wire/call.h"
 #include "tasks/@STEM@.h"
 
 namespace pathlab::calls {

@@ -3,7 +3,7 @@
 //
 // No test pins a convention: any uniform map onto the triangle (the square
 // root, the fold, either random number first) passes.
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <cmath>
 #include <string>
@@ -11,7 +11,7 @@
 
 #include "calls.h"
 #include "check.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "statistics.h"
 
 using namespace pathlab;

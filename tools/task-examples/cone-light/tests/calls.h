@@ -4,10 +4,10 @@
 
 #include <vector>
 
-#include "../remote/call.h"
+#include "wire/call.h"
 #include "tasks/@STEM@.h"
 
-// This task's own value type on the wire (tests/remote/wire.h).
+// This task's own value type on the wire (grader/wire/wire.h).
 namespace pathlab::wire {
 PATHLAB_WIRE_FIELDS(@STEM@::ConeSample, s.direction, s.pdf);
 }  // namespace pathlab::wire

@@ -4,7 +4,7 @@
 // No test pins a convention the handout leaves open: any frame around the
 // axis, either end of [cos theta_max, 1] for u.x, distance or its square
 // first; a direction exactly on the cone's edge may count as inside or not.
-#include "doctest_strings.h"
+#include "suite/doctest_strings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +14,7 @@
 
 #include "calls.h"
 #include "check.h"
-#include "grading.h"
+#include "suite/grading.h"
 #include "statistics.h"
 
 using namespace pathlab;

@@ -41,11 +41,11 @@ struct CallType<R(A...)> {
 // PATHLAB_REMOTE_CALL(Name, id, Shape, Result(Args...)): ids are unique
 // within a suite; Shape is the answer's (shape.h): shape::Fixed, or e.g.
 // shape::OnePer<2> for a vector as long as the third argument.
-#define PATHLAB_REMOTE_CALL(Name, callId, AnswerShape, ...)  \
-  struct Name : ::pathlab::remote::CallType<__VA_ARGS__> {   \
-    static constexpr uint32_t id = callId;                   \
-    static constexpr const char* name = #Name;               \
-    using Shape = AnswerShape;                               \
+#define PATHLAB_REMOTE_CALL(Name, callId, AnswerShape, ...) \
+  struct Name : ::pathlab::remote::CallType<__VA_ARGS__> {  \
+    static constexpr uint32_t id = callId;                  \
+    static constexpr const char* name = #Name;              \
+    using Shape = AnswerShape;                              \
   }
 
 // The candidate did not answer: it crashed, threw, or sent something that
@@ -124,8 +124,8 @@ std::vector<typename C::Result> callMany(const std::vector<typename C::Args>& it
   try {
     return decodeAnswer<C>(answer, items);
   } catch (const wire::WireError& e) {
-    throw CandidateError(std::string("the candidate's answer to ") + C::name + " does not match its request: " +
-                         e.what());
+    throw CandidateError(std::string("the candidate's answer to ") + C::name +
+                         " does not match its request: " + e.what());
   }
 }
 

@@ -102,7 +102,9 @@ template <class T>
 struct Fields;
 
 template <class T>
-concept HasFields = requires(T& t) { Fields<T>::tie(t); };
+concept HasFields = requires(T& t) {
+  Fields<T>::tie(t);
+};
 
 template <class T>
 concept Plain = std::is_arithmetic_v<T> && !std::is_same_v<T, bool>;
@@ -114,7 +116,7 @@ struct IsGlmVector<glm::vec<N, T, Q>> : std::true_type {};
 
 // Types whose bytes are their value (no padding, every bit pattern valid).
 template <class T>
-concept Bulk = Plain<T> || (IsGlmVector<T>::value && Plain<typename T::value_type>);
+concept Bulk = Plain<T> ||(IsGlmVector<T>::value&& Plain<typename T::value_type>);
 
 // ---------------------------------------------------------------- sizes
 
@@ -134,8 +136,10 @@ using FieldTypes = decltype(std::apply([](auto&... f) { return std::tuple<std::d
 
 template <class Tuple, class F>
 constexpr auto overTupleTypes(F f) {
-  return [&]<size_t... I>(std::index_sequence<I...>) { return f.template operator()<std::tuple_element_t<I, Tuple>...>(); }(
-      std::make_index_sequence<std::tuple_size_v<Tuple>>{});
+  return [&]<size_t... I>(std::index_sequence<I...>) {
+    return f.template operator()<std::tuple_element_t<I, Tuple>...>();
+  }
+  (std::make_index_sequence<std::tuple_size_v<Tuple>>{});
 }
 
 // Whether every value of T takes the same bytes, or at most a known number:
@@ -192,9 +196,13 @@ constexpr size_t maxWireSize() {
 // ---------------------------------------------------------------- values
 
 template <Bulk T>
-void write(Writer& w, const T& value) { w.raw(&value, sizeof value); }
+void write(Writer& w, const T& value) {
+  w.raw(&value, sizeof value);
+}
 template <Bulk T>
-void read(Reader& r, T& value) { r.raw(&value, sizeof value); }
+void read(Reader& r, T& value) {
+  r.raw(&value, sizeof value);
+}
 
 inline void write(Writer& w, bool value) { w.put(uint8_t(value ? 1 : 0)); }
 inline void read(Reader& r, bool& value) {
@@ -204,10 +212,10 @@ inline void read(Reader& r, bool& value) {
 }
 
 template <class E>
-  requires std::is_enum_v<E>
+requires std::is_enum_v<E>
 void write(Writer& w, E value) { w.put(static_cast<std::underlying_type_t<E>>(value)); }
 template <class E>
-  requires std::is_enum_v<E>
+requires std::is_enum_v<E>
 void read(Reader& r, E& value) { value = static_cast<E>(r.get<std::underlying_type_t<E>>()); }
 
 inline void write(Writer& w, const std::string& s) {
@@ -269,7 +277,9 @@ void read(Reader& r, std::tuple<T...>& t) {
 }
 
 template <HasFields T>
-void write(Writer& w, const T& s) { write(w, Fields<T>::tie(const_cast<T&>(s))); }
+void write(Writer& w, const T& s) {
+  write(w, Fields<T>::tie(const_cast<T&>(s)));
+}
 template <HasFields T>
 void read(Reader& r, T& s) {
   auto fields = Fields<T>::tie(s);
@@ -277,18 +287,20 @@ void read(Reader& r, T& s) {
 }
 
 template <class T>
-void Writer::put(const T& value) { write(*this, value); }
+void Writer::put(const T& value) {
+  write(*this, value);
+}
 
 // Field lists of the framework's value types, and of the task types the
 // framework's own calls carry (image_calls.h: the camera, the tree, the
 // adaptive settings). A task's other value types are its own: its calls.h
 // lists their fields with the same macro, in namespace pathlab::wire (task 2's
 // SurfacePoint, task 3's TraversalStats, task 4's LightDirection).
-#define PATHLAB_WIRE_FIELDS(Type, ...)                       \
-  template <>                                                \
-  struct Fields<Type> {                                      \
+#define PATHLAB_WIRE_FIELDS(Type, ...)                         \
+  template <>                                                  \
+  struct Fields<Type> {                                        \
     static auto tie(Type& s) { return std::tie(__VA_ARGS__); } \
-    static constexpr const char* names = #__VA_ARGS__;       \
+    static constexpr const char* names = #__VA_ARGS__;         \
   }
 
 PATHLAB_WIRE_FIELDS(Interval, s.min, s.max);

@@ -83,7 +83,8 @@ int main() {
   setEnvironment("PATHLAB_CANDIDATE", pathlab::currentExecutablePath());
 
   expect(remote::exchange(1, "answer", "ping", remote::kMaxAnswerBytes) == "ping back", "a call answered");
-  expect(remote::exchange(1, "answer", "pong", remote::kMaxAnswerBytes) == "pong back", "a second call on the same candidate");
+  expect(remote::exchange(1, "answer", "pong", remote::kMaxAnswerBytes) == "pong back",
+         "a second call on the same candidate");
   const std::string threw = failureOf(4, "throw");
   expect(contains(threw, "threw an exception in throw: x back"), "an exception reported (" + threw + ")");
   std::string output;
@@ -103,11 +104,13 @@ int main() {
   expect(contains(crash, "the task's code crashed (") && contains(crash, crashName) &&
              contains(crash, "while computing crash"),
          "a crash reported (" + crash + ")");
-  expect(remote::exchange(1, "answer", "again", remote::kMaxAnswerBytes) == "again back", "a fresh candidate after the crash");
+  expect(remote::exchange(1, "answer", "again", remote::kMaxAnswerBytes) == "again back",
+         "a fresh candidate after the crash");
   const std::string exited = failureOf(3, "exit");
   expect(contains(exited, "the candidate exited (exit code 7) while computing exit"),
          "an exit code reported (" + exited + ")");
-  expect(remote::exchange(1, "answer", "last", remote::kMaxAnswerBytes) == "last back", "a fresh candidate after the exit");
+  expect(remote::exchange(1, "answer", "last", remote::kMaxAnswerBytes) == "last back",
+         "a fresh candidate after the exit");
   // An answer longer than its request allows is refused from its header, unread.
   std::string tooLong;
   try {
@@ -115,7 +118,8 @@ int main() {
   } catch (const remote::CandidateError& e) {
     tooLong = e.what();
   }
-  expect(contains(tooLong, "a message of 9 bytes is over the limit of 8 bytes"), "an answer too long refused (" + tooLong + ")");
+  expect(contains(tooLong, "a message of 9 bytes is over the limit of 8 bytes"),
+         "an answer too long refused (" + tooLong + ")");
   // Three deaths in one test: the next call fails at once, naming the last;
   // a new test case starts a fresh candidate again.
   const std::string spent = failureOf(1, "answer");

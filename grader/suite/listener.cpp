@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "grading.h"
-#include "../remote/call.h"
+#include "wire/call.h"
 
 namespace pathlab::test {
 
@@ -42,7 +42,8 @@ void appendVerdictLine(const std::string& line) {
 void recordLeaderboard(const std::string& name, double value, bool lowerIsBetter) {
   char number[64];
   std::snprintf(number, sizeof number, "%.6g", value);
-  std::printf("leaderboard: %s = %s (%s is better; ungraded)\n", name.c_str(), number, lowerIsBetter ? "lower" : "higher");
+  std::printf("leaderboard: %s = %s (%s is better; ungraded)\n", name.c_str(), number,
+              lowerIsBetter ? "lower" : "higher");
   appendVerdictLine(std::string("LEADERBOARD ") + (lowerIsBetter ? "asc " : "desc ") + number + " " + name);
 }
 

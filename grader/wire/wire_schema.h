@@ -54,7 +54,9 @@ std::string tupleSchema(const char* names = nullptr) {
 }
 
 template <class T>
-concept NamedFields = requires { Fields<T>::names; };
+concept NamedFields = requires {
+  Fields<T>::names;
+};
 
 template <class T>
 std::string schemaOf() {
@@ -65,7 +67,8 @@ std::string schemaOf() {
   } else if constexpr (IsGlmVector<T>::value) {
     return [&]<size_t... I>(std::index_sequence<I...>) {
       return tupleSchema<std::enable_if_t<I >= 0, typename T::value_type>...>();
-    }(std::make_index_sequence<size_t(T::length())>{});
+    }
+    (std::make_index_sequence<size_t(T::length())>{});
   } else if constexpr (IsOptional<T>::value) {
     return "{\"t\":\"optional\",\"of\":" + schemaOf<typename T::value_type>() + "}";
   } else if constexpr (IsTuple<T>::value) {

@@ -8,8 +8,8 @@
 #include <string>
 #include <tuple>
 
-#include "../support/render_moments.h"
-#include "call.h"
+#include "render_moments.h"
+#include "wire/call.h"
 
 namespace pathlab::calls {
 // A render of the size asked for: width x height means and variances, with

@@ -73,8 +73,9 @@ class Candidate {
       // Asks first, each answered, until the answer comes.
       while ((answered = readMessage(fromCandidate_, kResponseMagic, status, answer, maxAnswerBytes)) &&
              Status(status) == Status::Asks) {
-        if (!asks) throw CandidateError(std::string("the candidate asked the judge for data during ") + name +
-                                        ", which serves none");
+        if (!asks)
+          throw CandidateError(std::string("the candidate asked the judge for data during ") + name +
+                               ", which serves none");
         writeMessage(toCandidate_, kRequestMagic, kReplyId, (*asks)(answer));
       }
     } catch (const CandidateError&) {
@@ -87,8 +88,7 @@ class Candidate {
     }
     if (!answered) throw CandidateError(died(name));
     switch (Status(status)) {
-      case Status::Ok:
-        return answer;
+      case Status::Ok: return answer;
       case Status::Threw:
         throw CandidateError(std::string("the task's code threw an exception in ") + name + ": " + printable(answer));
       case Status::UnknownCall:
@@ -193,8 +193,8 @@ class Candidate {
   std::mutex outputMutex_;
   std::string output_;
   size_t dropped_ = 0;
-  int deaths_ = 0;          // in this test case
-  std::string lastDeath_;   // how the last one went
+  int deaths_ = 0;         // in this test case
+  std::string lastDeath_;  // how the last one went
 };
 
 Candidate& candidate() {

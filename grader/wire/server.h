@@ -21,7 +21,8 @@ class Server {
   // Serves call C with f, which takes C's arguments and returns its result.
   template <class C, class F>
   void serve(F f) {
-    schemas_[C::id] = std::string("{\"name\":\"") + C::name + "\",\"answer\":" + wire::schemaOf<typename C::Result>() + "}";
+    schemas_[C::id] =
+        std::string("{\"name\":\"") + C::name + "\",\"answer\":" + wire::schemaOf<typename C::Result>() + "}";
     handlers_[C::id] = [f](wire::Reader& in, wire::Writer& out) {
       const size_t count = in.count(1);
       std::vector<typename C::Args> items(count);

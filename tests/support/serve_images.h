@@ -2,7 +2,7 @@
 #pragma once
 
 #include "image_calls.h"
-#include "server.h"
+#include "wire/server.h"
 
 namespace pathlab::remote {
 

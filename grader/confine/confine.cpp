@@ -30,9 +30,9 @@ int main(int argc, char** argv) {
     fprintf(stderr, "pathlab-confine: seccomp_init failed\n");
     return 2;
   }
-  const char* const refused[] = {"socket", "connect", "bind", "listen", "accept", "accept4", "sendto", "sendmsg",
-                           "sendmmsg", "io_uring_setup", "shmget", "shmat", "semget", "msgget", "mq_open",
-                           "add_key", "request_key", "keyctl"};
+  const char* const refused[] = {"socket", "connect", "bind",     "listen",         "accept",      "accept4",
+                                 "sendto", "sendmsg", "sendmmsg", "io_uring_setup", "shmget",      "shmat",
+                                 "semget", "msgget",  "mq_open",  "add_key",        "request_key", "keyctl"};
   for (size_t i = 0; i < sizeof refused / sizeof refused[0]; ++i) {
     const int call = seccomp_syscall_resolve_name(refused[i]);
     if (call == __NR_SCMP_ERROR) continue;  // not a system call on this architecture

@@ -1,12 +1,12 @@
 // The candidate's side of trace_calls.h, for the suites that use them.
 #pragma once
 
-#include "../support/render_support.h"
+#include "render_support.h"
 #include "util/random.h"
 #include "render/task_wiring.h"
 #include "tasks/direct_lighting.h"
 #include "tasks/path_tracing.h"
-#include "server.h"
+#include "wire/server.h"
 #include "trace_calls.h"
 
 namespace pathlab::remote {

@@ -30,8 +30,8 @@ namespace pathlab::remote {
 
 inline constexpr uint32_t kRequestMagic = 0x51455250;   // "PREQ"
 inline constexpr uint32_t kResponseMagic = 0x53455250;  // "PRES"
-inline constexpr int kRequestFd = 3;   // the candidate reads requests here
-inline constexpr int kResponseFd = 4;  // and writes its answers here
+inline constexpr int kRequestFd = 3;                    // the candidate reads requests here
+inline constexpr int kResponseFd = 4;                   // and writes its answers here
 // The largest message either side accepts (a 1e6-sample batch is ~30 MB).
 inline constexpr uint64_t kMaxMessageBytes = uint64_t(512) << 20;
 // The largest answer that is not Ok (an exception's message): the judge

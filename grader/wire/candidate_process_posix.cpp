@@ -53,7 +53,7 @@ CandidatePipes CandidateProcess::start(const std::string& path) {
   }
   for (int* fds : {requests, answers, output}) {
     fds[0] = high(fds[0]), fds[1] = high(fds[1]);
-#if defined(F_SETPIPE_SZ)  // Linux only
+#if defined(F_SETPIPE_SZ)                    // Linux only
     ::fcntl(fds[0], F_SETPIPE_SZ, 1 << 20);  // batches of megabytes in few round trips
 #endif
   }

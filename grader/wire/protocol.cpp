@@ -92,14 +92,15 @@ bool readMessage(int fd, uint32_t magic, uint32_t& value, std::string& payload, 
   Header header;
   if (!readAll(fd, &header, sizeof header)) return false;
   if (header.magic != magic) throw std::runtime_error("not a message of this protocol (bad magic number)");
-  const bool error = magic == kResponseMagic && header.value != uint32_t(Status::Ok) &&
-                     header.value != uint32_t(Status::Asks);
+  const bool error =
+      magic == kResponseMagic && header.value != uint32_t(Status::Ok) && header.value != uint32_t(Status::Asks);
   const bool ask = magic == kResponseMagic && header.value == uint32_t(Status::Asks);
   const uint64_t limit = error ? kMaxErrorMessageBytes : ask ? kMaxAskBytes : std::min(maxBytes, kMaxMessageBytes);
   if (header.size > limit) {
-    throw std::runtime_error((error ? "an error message of " : "a message of ") + std::to_string(header.size) +
-                             " bytes is over the limit of " + std::to_string(limit) + " bytes" +
-                             (error || ask || limit == kMaxMessageBytes ? "" : " (the most a right answer to this request takes)"));
+    throw std::runtime_error(
+        (error ? "an error message of " : "a message of ") + std::to_string(header.size) +
+        " bytes is over the limit of " + std::to_string(limit) + " bytes" +
+        (error || ask || limit == kMaxMessageBytes ? "" : " (the most a right answer to this request takes)"));
   }
   value = header.value;
   payload.resize(header.size);

@@ -11,7 +11,7 @@
 #include <tuple>
 #include <vector>
 
-#include "call.h"
+#include "wire/call.h"
 #include "core/bsdf.h"
 #include "core/scene.h"
 #include "core/trace.h"
@@ -27,10 +27,13 @@ struct TraceSettings {
 using DirectQuery = std::tuple<Hit, Vec3 /*wo*/, uint32_t /*pixel*/, uint64_t /*seed*/>;
 using PathQuery = std::tuple<Ray, uint32_t /*pixel*/, uint64_t /*seed*/>;
 
-PATHLAB_REMOTE_CALL(DirectLighting, 101, shape::OnePer<2>, std::vector<Color>(Scene, TraceSettings, std::vector<DirectQuery>));
-PATHLAB_REMOTE_CALL(TracePaths, 102, shape::OnePer<2>, std::vector<Color>(Scene, TraceSettings, std::vector<PathQuery>));
+PATHLAB_REMOTE_CALL(DirectLighting, 101, shape::OnePer<2>,
+                    std::vector<Color>(Scene, TraceSettings, std::vector<DirectQuery>));
+PATHLAB_REMOTE_CALL(TracePaths, 102, shape::OnePer<2>,
+                    std::vector<Color>(Scene, TraceSettings, std::vector<PathQuery>));
 // Bsdf(material, hit, wo).sample(wo, u) for each u.
-PATHLAB_REMOTE_CALL(BsdfSamples, 103, shape::OnePer<3>, std::vector<std::optional<BsdfSample>>(Material, Hit, Vec3, std::vector<Vec2>));
+PATHLAB_REMOTE_CALL(BsdfSamples, 103, shape::OnePer<3>,
+                    std::vector<std::optional<BsdfSample>>(Material, Hit, Vec3, std::vector<Vec2>));
 // Each DirectLighting query's estimate, its occlusion queries served by the
 // judge: the candidate's trace context asks the judge for every one
 // (context.occluded, or anything else that reaches its RayQueries' anyHit:
@@ -40,7 +43,8 @@ PATHLAB_REMOTE_CALL(BsdfSamples, 103, shape::OnePer<3>, std::vector<std::optiona
 // queries stay the candidate's own. (A log kept in the candidate's process,
 // context.log, is the candidate's to write: the judge does not read it.)
 using ShadowQuery = std::tuple<Ray, Interval>;
-PATHLAB_REMOTE_CALL(ShadowRays, 104, shape::OnePer<2>, std::vector<Color>(Scene, TraceSettings, std::vector<DirectQuery>));
+PATHLAB_REMOTE_CALL(ShadowRays, 104, shape::OnePer<2>,
+                    std::vector<Color>(Scene, TraceSettings, std::vector<DirectQuery>));
 // The most occlusion queries the judge serves one estimate: -l per emitting
 // surface and one per point light and for the sky, twice over (room for an
 // estimator that tests a sample twice).
@@ -67,18 +71,20 @@ struct Fields<calls::TraceSettings> {
 namespace pathlab::candidate {
 
 // estimateDirectLighting(context, hit, Bsdf(material of hit, hit, wo), wo, Sampler(pixel, 0, seed)) per query.
-inline std::vector<Color> estimateDirectLighting(const TraceContext& context, const std::vector<calls::DirectQuery>& queries) {
+inline std::vector<Color> estimateDirectLighting(const TraceContext& context,
+                                                 const std::vector<calls::DirectQuery>& queries) {
   return remote::call<calls::DirectLighting>(context.scene, calls::settingsOf(context), queries);
 }
 // What the judge saw of one estimate whose occlusion queries it served.
 struct ServedShadows {
-  Color estimate;                       // what estimateDirectLighting returned (its claim)
+  Color estimate;                        // what estimateDirectLighting returned (its claim)
   std::vector<calls::ShadowQuery> rays;  // the occlusion queries the judge served it, in order (the judge's record)
 };
 // estimateDirectLighting per query (as estimateDirectLighting above), each
 // occlusion query asked of the judge, which answers with its own trace of
 // `context`'s scene and records it.
-inline std::vector<ServedShadows> shadowRays(const TraceContext& context, const std::vector<calls::DirectQuery>& queries) {
+inline std::vector<ServedShadows> shadowRays(const TraceContext& context,
+                                             const std::vector<calls::DirectQuery>& queries) {
   const calls::TraceSettings settings = calls::settingsOf(context);
   const size_t most = calls::mostShadowRays(context.scene, settings);
   std::vector<ServedShadows> served(queries.size());

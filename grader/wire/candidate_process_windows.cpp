@@ -33,7 +33,9 @@ std::wstring widen(const std::string& text) {
   return wide;
 }
 
-std::string lastError(const char* what) { return std::string(what) + " failed (error " + std::to_string(GetLastError()) + ")"; }
+std::string lastError(const char* what) {
+  return std::string(what) + " failed (error " + std::to_string(GetLastError()) + ")";
+}
 
 // The exceptions a crashing program ends with, as their names.
 std::string exceptionName(DWORD code) {
@@ -75,7 +77,8 @@ int toDescriptor(HANDLE handle, int flags) {
 CandidatePipes CandidateProcess::start(const std::string& path) {
   const Pipe requests = makePipe(true), answers = makePipe(false), output = makePipe(false);
   SECURITY_ATTRIBUTES inherit{sizeof(SECURITY_ATTRIBUTES), nullptr, TRUE};
-  HANDLE nul = CreateFileW(L"NUL", GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE, &inherit, OPEN_EXISTING, 0, nullptr);
+  HANDLE nul =
+      CreateFileW(L"NUL", GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE, &inherit, OPEN_EXISTING, 0, nullptr);
   // The child learns its pipes' handle values (inherited handles keep their values).
   const std::string pipes = std::to_string(reinterpret_cast<uintptr_t>(requests.read)) + " " +
                             std::to_string(reinterpret_cast<uintptr_t>(answers.write));
@@ -88,8 +91,8 @@ CandidatePipes CandidateProcess::start(const std::string& path) {
   startup.hStdError = output.write;
   PROCESS_INFORMATION process{};
   std::wstring commandLine = L"\"" + widen(path) + L"\"";
-  const BOOL started = CreateProcessW(widen(path).c_str(), commandLine.data(), nullptr, nullptr, TRUE,
-                                      CREATE_NO_WINDOW, nullptr, nullptr, &startup, &process);
+  const BOOL started = CreateProcessW(widen(path).c_str(), commandLine.data(), nullptr, nullptr, TRUE, CREATE_NO_WINDOW,
+                                      nullptr, nullptr, &startup, &process);
   const DWORD error = GetLastError();
   SetEnvironmentVariableA("PATHLAB_CANDIDATE_PIPES", nullptr);
   for (HANDLE childEnd : {requests.read, answers.write, output.write, nul}) CloseHandle(childEnd);

@@ -7,7 +7,7 @@ not written candidate::name(...) (comments and strings are ignored), on
 a suite that judges a mean by the candidate's own noise without a ceiling
 (MeanEstimate::judgeByOwnNoise, which is for the framework's own tests),
 and on any test file that includes doctest other than through
-support/doctest_strings.h (without it a C string in a message prints as
+grader/suite/doctest_strings.h (without it a C string in a message prints as
 an address).
 
 usage: check_direct_calls.py TESTS_DIR FRAMEWORK_DIR"""
@@ -55,7 +55,7 @@ def main() -> int:
             continue
         for number, line in enumerate(source.read_text(errors="replace").splitlines(), 1):
             if re.match(r'\s*#\s*include\s*[<"]doctest/doctest\.h[>"]', line):
-                problems.append(f"{source.relative_to(tests)}:{number}: include \"doctest_strings.h\", not doctest "
+                problems.append(f"{source.relative_to(tests)}:{number}: include \"suite/doctest_strings.h\", not doctest "
                                 "itself (a C string in a message would print as an address)")
     for p in problems:
         print(p)

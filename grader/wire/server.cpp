@@ -91,7 +91,8 @@ int main(int argc, char** argv) {
   try {
     const int requests = pathlab::remote::candidateRequestFd(), answers = pathlab::remote::candidateResponseFd();
     if (requests < 0 || answers < 0) {
-      std::fprintf(stderr, "a candidate answers a test suite's calls: run the suite (test-NN-name), not this program\n");
+      std::fprintf(stderr,
+                   "a candidate answers a test suite's calls: run the suite (test-NN-name), not this program\n");
       return 2;
     }
     return server.run(requests, answers);
