@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace pathlab::demo {
 namespace {
@@ -63,6 +66,141 @@ void dashedLine(ImDrawList* list, ImVec2 a, ImVec2 b, ImU32 color) {
   }
 }
 
+// A plot's rectangle on screen: the title above, tick labels left and below.
+struct PlotBox {
+  ImVec2 origin;
+  float left, right, top, bottom;
+  PlotBox(ImVec2 corner, float width, float height)
+      : origin(corner),
+        left(corner.x + 58),
+        right(corner.x + width - 8),
+        top(corner.y + 22),
+        bottom(corner.y + height - 34) {}
+};
+
+using Legend = std::vector<std::pair<std::string, ImU32>>;
+
+const ImU32 kText = IM_COL32(220, 220, 220, 255), kGrid = IM_COL32(70, 70, 70, 255);
+
+size_t barGroupsOf(const Plot& plot) {
+  return size_t(std::count_if(plot.series.begin(), plot.series.end(),
+                              [](const Series& s) { return s.kind == Series::Kind::Bars; }));
+}
+
+// The axes over every series but images (bars span their categories, and
+// histograms and bars start at 0 on a linear axis), mapped to the box; an
+// equal-aspect plot has the same data units per pixel on both.
+std::pair<Axis, Axis> axesFor(const Plot& plot, const PlotBox& box) {
+  Axis x, y;
+  x.log = plot.logX, y.log = plot.logY;
+  for (const Series& s : plot.series) {
+    switch (s.kind) {
+      case Series::Kind::Line:
+      case Series::Kind::Scatter:
+      case Series::Kind::Histogram:
+        for (double v : s.x) x.include(v);
+        for (double v : s.y) y.include(v);
+        if (s.kind == Series::Kind::Histogram && !y.log) y.include(0.0);
+        break;
+      case Series::Kind::Bars:
+        x.include(-0.5), x.include(double(s.y.size()) - 0.5);
+        for (double v : s.y) y.include(v);
+        if (!y.log) y.include(0.0);
+        break;
+      case Series::Kind::Image: break;
+    }
+  }
+  x.finish(), y.finish();
+  x.p0 = box.left, x.p1 = box.right, y.p0 = box.bottom, y.p1 = box.top;
+  if (plot.equalAspect) {
+    const double width = box.right - box.left, height = box.bottom - box.top;
+    const double perPixel = std::max((x.hi - x.lo) / width, (y.hi - y.lo) / height);
+    const double cx = 0.5 * (x.lo + x.hi), cy = 0.5 * (y.lo + y.hi);
+    x.lo = cx - perPixel * width / 2, x.hi = cx + perPixel * width / 2;
+    y.lo = cy - perPixel * height / 2, y.hi = cy + perPixel * height / 2;
+  }
+  return {x, y};
+}
+
+// Every series but images, each in the next colour of the palette, clipped
+// to the box; returns the legend (the labelled series).
+Legend drawSeries(ImDrawList* list, const Plot& plot, const Axis& x, const Axis& y, const PlotBox& box) {
+  list->PushClipRect(ImVec2(box.left, box.top), ImVec2(box.right, box.bottom), true);
+  for (double t : x.ticks()) list->AddLine(ImVec2(x.map(t), box.top), ImVec2(x.map(t), box.bottom), kGrid);
+  for (double t : y.ticks()) list->AddLine(ImVec2(box.left, y.map(t)), ImVec2(box.right, y.map(t)), kGrid);
+  const size_t barGroups = barGroupsOf(plot);
+  const float base = y.log ? box.bottom : y.map(0.0);  // where histograms and bars stand
+  size_t colorIndex = 0, barIndex = 0;
+  Legend legend;
+  for (const Series& s : plot.series) {
+    if (s.kind == Series::Kind::Image) continue;
+    const ImU32 color = kPalette[colorIndex++ % std::size(kPalette)];
+    if (!s.label.empty()) legend.push_back({s.label, color});
+    switch (s.kind) {
+      case Series::Kind::Line:
+        for (size_t i = 1; i < s.x.size(); ++i) {
+          const ImVec2 a(x.map(s.x[i - 1]), y.map(s.y[i - 1])), b(x.map(s.x[i]), y.map(s.y[i]));
+          s.dashed ? dashedLine(list, a, b, color) : list->AddLine(a, b, color, 2.0f);
+        }
+        break;
+      case Series::Kind::Scatter:
+        for (size_t i = 0; i < std::min<size_t>(s.x.size(), 5000); ++i) {
+          list->AddCircleFilled(ImVec2(x.map(s.x[i]), y.map(s.y[i])), 1.6f, withAlpha(color, 170));
+        }
+        break;
+      case Series::Kind::Histogram:
+        for (size_t i = 0; i + 1 < s.x.size() && i < s.y.size(); ++i) {
+          list->AddRectFilled(ImVec2(x.map(s.x[i]), y.map(s.y[i])), ImVec2(x.map(s.x[i + 1]), base),
+                              withAlpha(color, 110));
+        }
+        break;
+      case Series::Kind::Bars: {
+        const double barWidth = 0.8 / double(std::max<size_t>(1, barGroups));
+        for (size_t i = 0; i < s.y.size(); ++i) {
+          const double centre = double(i) + (double(barIndex) - double(barGroups - 1) / 2.0) * barWidth;
+          list->AddRectFilled(ImVec2(x.map(centre - barWidth / 2), y.map(s.y[i])),
+                              ImVec2(x.map(centre + barWidth / 2), base), color);
+        }
+        ++barIndex;
+        break;
+      }
+      case Series::Kind::Image: break;
+    }
+  }
+  list->PopClipRect();
+  list->AddRect(ImVec2(box.left, box.top), ImVec2(box.right, box.bottom), IM_COL32(150, 150, 150, 255));
+  return legend;
+}
+
+// Tick labels (or the categories), the axis labels and the legend.
+void drawLabels(ImDrawList* list, const Plot& plot, const Axis& x, const Axis& y, const PlotBox& box,
+                const Legend& legend) {
+  char label[32];
+  if (plot.categories.empty()) {
+    for (double t : x.ticks()) {
+      std::snprintf(label, sizeof label, "%.3g", t);
+      list->AddText(ImVec2(x.map(t) - 10, box.bottom + 2), kText, label);
+    }
+  }
+  for (size_t i = 0; i < plot.categories.size(); ++i) {
+    list->AddText(ImVec2(x.map(double(i)) - 12, box.bottom + 2), kText, plot.categories[i].c_str());
+  }
+  for (double t : y.ticks()) {
+    std::snprintf(label, sizeof label, "%.3g", t);
+    list->AddText(ImVec2(box.origin.x + 2, y.map(t) - 7), kText, label);
+  }
+  list->AddText(ImVec2((box.left + box.right) / 2 - 20, box.bottom + 17), kText, plot.xlabel.c_str());
+  list->AddText(ImVec2(box.left + 4, box.top + 2), IM_COL32(170, 170, 170, 255), plot.ylabel.c_str());
+  float legendY = box.top + 18;
+  for (const auto& [name, color] : legend) {
+    const ImVec2 size = ImGui::CalcTextSize(name.c_str());
+    const float lx = std::max(box.left + 4, box.right - size.x - 20);
+    list->AddRectFilled(ImVec2(lx, legendY + 3), ImVec2(lx + 10, legendY + 13), color);
+    list->AddText(ImVec2(lx + 14, legendY), kText, name.c_str());
+    legendY += 16;
+  }
+}
+
 }  // namespace
 
 void FigureView::draw(const Figure& figure) {
@@ -91,14 +229,21 @@ void FigureView::drawRows(const Figure& figure, size_t perRow) {
 }
 
 void FigureView::drawPlot(const Plot& plot, float width, float height) {
-  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const PlotBox box(ImGui::GetCursorScreenPos(), width, height);
   ImGui::Dummy(ImVec2(width, height));
   ImDrawList* list = ImGui::GetWindowDrawList();
-  const ImU32 text = IM_COL32(220, 220, 220, 255), grid = IM_COL32(70, 70, 70, 255);
-  list->AddText(ImVec2(origin.x + 4, origin.y), text, plot.title.c_str());
-  const float left = origin.x + 58, right = origin.x + width - 8, top = origin.y + 22, bottom = origin.y + height - 34;
+  list->AddText(ImVec2(box.origin.x + 4, box.origin.y), kText, plot.title.c_str());
+  if (drawImages(plot, width, height, box.top)) return;
+  const auto [x, y] = axesFor(plot, box);
+  const Legend legend = drawSeries(list, plot, x, y, box);
+  drawLabels(list, plot, x, y, box, legend);
+}
 
-  // Images fill the plot area, keeping their aspect ratio.
+// Images fill the plot area, keeping their aspect ratio; true when the plot
+// has nothing else.
+bool FigureView::drawImages(const Plot& plot, float width, float height, float top) {
+  const ImVec2 origin = ImGui::GetItemRectMin();
+  ImDrawList* list = ImGui::GetWindowDrawList();
   for (const Series& s : plot.series) {
     if (s.kind != Series::Kind::Image) continue;
     if (nextTexture_ >= textures_.size()) {
@@ -110,109 +255,8 @@ void FigureView::drawPlot(const Plot& plot, float width, float height) {
     const ImVec2 a(origin.x + 4, top), b(a.x + float(texture.width()) * scale, a.y + float(texture.height()) * scale);
     list->AddImage(texture.imguiId(), a, b);
   }
-  const bool onlyImages = std::all_of(plot.series.begin(), plot.series.end(), [](const Series& s) { return s.kind == Series::Kind::Image; });
-  if (onlyImages) return;
-
-  Axis x, y;
-  x.log = plot.logX, y.log = plot.logY;
-  size_t barGroups = 0;
-  for (const Series& s : plot.series) {
-    switch (s.kind) {
-      case Series::Kind::Line:
-      case Series::Kind::Scatter:
-        for (double v : s.x) x.include(v);
-        for (double v : s.y) y.include(v);
-        break;
-      case Series::Kind::Histogram:
-        for (double v : s.x) x.include(v);
-        for (double v : s.y) y.include(v);
-        if (!y.log) y.include(0.0);
-        break;
-      case Series::Kind::Bars:
-        x.include(-0.5), x.include(double(s.y.size()) - 0.5);
-        for (double v : s.y) y.include(v);
-        if (!y.log) y.include(0.0);
-        ++barGroups;
-        break;
-      case Series::Kind::Image: break;
-    }
-  }
-  x.finish(), y.finish();
-  x.p0 = left, x.p1 = right, y.p0 = bottom, y.p1 = top;
-  if (plot.equalAspect) {  // the same data units per pixel on both axes
-    const double perPixel = std::max((x.hi - x.lo) / (right - left), (y.hi - y.lo) / (bottom - top));
-    const double cx = 0.5 * (x.lo + x.hi), cy = 0.5 * (y.lo + y.hi);
-    x.lo = cx - perPixel * (right - left) / 2, x.hi = cx + perPixel * (right - left) / 2;
-    y.lo = cy - perPixel * (bottom - top) / 2, y.hi = cy + perPixel * (bottom - top) / 2;
-  }
-  list->PushClipRect(ImVec2(left, top), ImVec2(right, bottom), true);
-  for (double t : x.ticks()) list->AddLine(ImVec2(x.map(t), top), ImVec2(x.map(t), bottom), grid);
-  for (double t : y.ticks()) list->AddLine(ImVec2(left, y.map(t)), ImVec2(right, y.map(t)), grid);
-
-  size_t colorIndex = 0, barIndex = 0;
-  std::vector<std::pair<std::string, ImU32>> legend;
-  for (const Series& s : plot.series) {
-    if (s.kind == Series::Kind::Image) continue;
-    const ImU32 color = kPalette[colorIndex++ % std::size(kPalette)];
-    if (!s.label.empty()) legend.push_back({s.label, color});
-    switch (s.kind) {
-      case Series::Kind::Line:
-        for (size_t i = 1; i < s.x.size(); ++i) {
-          const ImVec2 a(x.map(s.x[i - 1]), y.map(s.y[i - 1])), b(x.map(s.x[i]), y.map(s.y[i]));
-          s.dashed ? dashedLine(list, a, b, color) : list->AddLine(a, b, color, 2.0f);
-        }
-        break;
-      case Series::Kind::Scatter:
-        for (size_t i = 0; i < std::min<size_t>(s.x.size(), 5000); ++i) {
-          list->AddCircleFilled(ImVec2(x.map(s.x[i]), y.map(s.y[i])), 1.6f, withAlpha(color, 170));
-        }
-        break;
-      case Series::Kind::Histogram:
-        for (size_t i = 0; i + 1 < s.x.size() && i < s.y.size(); ++i) {
-          const float base = y.log ? bottom : y.map(0.0);
-          list->AddRectFilled(ImVec2(x.map(s.x[i]), y.map(s.y[i])), ImVec2(x.map(s.x[i + 1]), base), withAlpha(color, 110));
-        }
-        break;
-      case Series::Kind::Bars: {
-        const double barWidth = 0.8 / double(std::max<size_t>(1, barGroups));
-        for (size_t i = 0; i < s.y.size(); ++i) {
-          const double centre = double(i) + (double(barIndex) - double(barGroups - 1) / 2.0) * barWidth;
-          const float base = y.log ? bottom : y.map(0.0);
-          list->AddRectFilled(ImVec2(x.map(centre - barWidth / 2), y.map(s.y[i])), ImVec2(x.map(centre + barWidth / 2), base), color);
-        }
-        ++barIndex;
-        break;
-      }
-      case Series::Kind::Image: break;
-    }
-  }
-  list->PopClipRect();
-  list->AddRect(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(150, 150, 150, 255));
-
-  // Tick labels, axis labels, categories, legend.
-  char label[32];
-  for (double t : x.ticks()) {
-    if (!plot.categories.empty()) break;
-    std::snprintf(label, sizeof label, "%.3g", t);
-    list->AddText(ImVec2(x.map(t) - 10, bottom + 2), text, label);
-  }
-  for (size_t i = 0; i < plot.categories.size(); ++i) {
-    list->AddText(ImVec2(x.map(double(i)) - 12, bottom + 2), text, plot.categories[i].c_str());
-  }
-  for (double t : y.ticks()) {
-    std::snprintf(label, sizeof label, "%.3g", t);
-    list->AddText(ImVec2(origin.x + 2, y.map(t) - 7), text, label);
-  }
-  list->AddText(ImVec2((left + right) / 2 - 20, bottom + 17), text, plot.xlabel.c_str());
-  list->AddText(ImVec2(left + 4, top + 2), IM_COL32(170, 170, 170, 255), plot.ylabel.c_str());
-  float legendY = top + 18;
-  for (const auto& [name, color] : legend) {
-    const ImVec2 size = ImGui::CalcTextSize(name.c_str());
-    const float lx = std::max(left + 4, right - size.x - 20);
-    list->AddRectFilled(ImVec2(lx, legendY + 3), ImVec2(lx + 10, legendY + 13), color);
-    list->AddText(ImVec2(lx + 14, legendY), text, name.c_str());
-    legendY += 16;
-  }
+  return std::all_of(plot.series.begin(), plot.series.end(),
+                     [](const Series& s) { return s.kind == Series::Kind::Image; });
 }
 
 }  // namespace pathlab::demo

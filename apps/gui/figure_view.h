@@ -22,6 +22,7 @@ class FigureView {
 
  private:
   void drawPlot(const Plot& plot, float width, float height);
+  bool drawImages(const Plot& plot, float width, float height, float top);
   std::vector<std::unique_ptr<gui::Texture>> textures_;  // one per image series, in order
   size_t nextTexture_ = 0;
 };

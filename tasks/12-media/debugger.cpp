@@ -92,23 +92,16 @@ DebugOutput pathsView(const DebugViewRequest& request) {
   return {image, summary + formatInspection(inspection)};
 }
 
-DebugOutput transmittanceView(const DebugViewRequest& request) {
-  const Scene& scene = request.scene;
-  const Accelerator accelerator(scene);
-  const Lights lights = Lights::fromScene(scene, kLinkedTasks.environment);
-  TraceContext context(scene, accelerator, lights, kLinkedTasks.lobes);
-  const IVec2 pixel = request.inspectedPixel();
-  const CameraBasis basis = cameraBasis(scene.camera);
-  const Ray ray = generateCameraRay(scene.camera, basis, Point2(pixel) + Point2(0.5f),
-                                    {scene.render.width, scene.render.height});
+// A surface along the camera ray, and the medium after it as the scene says:
+// where the curve may bend (an interface) or drop (a surface).
+struct Crossing {
+  float t;
+  MediumIndex after;
+  bool interface;
+};
 
-  // The surfaces along the ray (through every one of them), and the medium
-  // after each as the scene says: where the curve may bend or drop.
-  struct Crossing {
-    float t;
-    MediumIndex after;
-    bool interface;
-  };
+// The surfaces along the ray, through every one of them (at most 16).
+std::vector<Crossing> crossingsAlong(const Scene& scene, const Accelerator& accelerator, const Ray& ray) {
   std::vector<Crossing> crossings;
   MediumIndex medium = scene.medium;
   float start = 0.0f;
@@ -119,6 +112,83 @@ DebugOutput transmittanceView(const DebugViewRequest& request) {
     crossings.push_back({hit->t, medium, scene.materials[hit->material].type == MaterialType::Interface});
     start = hit->t * (1.0f + 1e-4f) + 1e-4f;
   }
+  return crossings;
+}
+
+// The plot's frame: distance 0..far across, log10 T from 0 down to -6.
+struct TransmittancePlot {
+  static constexpr double kDecades = 6.0;
+  float far, left, right, top, bottom;
+  TransmittancePlot(float farthest, int width, int height)
+      : far(farthest), left(60.0f), right(float(width) - 20.0f), top(30.0f), bottom(float(height) - 40.0f) {}
+  float x(float d) const { return left + (right - left) * d / far; }
+  float y(double t) const {
+    const double l = std::clamp(std::log10(std::max(t, 1e-30)), -kDecades, 0.0);
+    return float(top + (bottom - top) * (-l / kDecades));
+  }
+};
+
+void drawDecadesAndCrossings(Image& image, const TransmittancePlot& plot, const std::vector<Crossing>& crossings) {
+  for (int decade = 0; decade <= int(TransmittancePlot::kDecades); ++decade) {
+    const float yy = plot.y(std::pow(10.0, -decade));
+    drawLine(image, Point2(plot.left, yy), Point2(plot.right, yy), Color(0.12f));
+    drawText(image, Point2(6.0f, yy - 6.0f), "1E-" + std::to_string(decade), Color(0.6f), 1);
+  }
+  for (const Crossing& c : crossings) {
+    drawLine(image, Point2(plot.x(c.t), plot.top), Point2(plot.x(c.t), plot.bottom),
+             c.interface ? Color(0.2f, 0.4f, 0.9f) : Color(0.6f));
+  }
+}
+
+// Guides, dashed: from the curve's value at the start of each stretch, slope
+// -sigmaT of the medium there; none past a surface (nothing gets through).
+void drawGuides(Image& image, const TransmittancePlot& plot, const Scene& scene, const std::vector<Crossing>& crossings,
+                const std::vector<double>& value) {
+  const int steps = int(value.size()) - 1;
+  const float far = plot.far;
+  float from = 0.0f;
+  MediumIndex in = scene.medium;
+  for (size_t k = 0; k <= crossings.size(); ++k) {
+    const float to = k < crossings.size() ? crossings[k].t : far;
+    if (in != kVacuum) {
+      const double sigmaT = double(scene.media[size_t(in)].sigmaT);
+      const int i0 = std::min(steps, int(std::ceil(from / far * float(steps))));
+      const double t0 = value[size_t(i0)], d0 = far * double(i0) / steps;
+      for (float d = float(d0); d < to; d += far / 100.0f) {
+        if (int(d / far * 100.0f) % 2 == 0) {
+          const float d1 = std::min(to, d + far / 100.0f);
+          drawLine(image, Point2(plot.x(d), plot.y(t0 * std::exp(-sigmaT * (d - d0)))),
+                   Point2(plot.x(d1), plot.y(t0 * std::exp(-sigmaT * (d1 - d0)))), Color(0.9f, 0.6f, 0.1f));
+        }
+      }
+    }
+    if (k < crossings.size()) {
+      in = crossings[k].after;
+      if (!crossings[k].interface) break;
+      from = to;
+    }
+  }
+}
+
+void drawCurve(Image& image, const TransmittancePlot& plot, const std::vector<double>& value) {
+  const int steps = int(value.size()) - 1;
+  for (int i = 0; i < steps; ++i) {
+    drawLine(image, Point2(plot.x(plot.far * float(i) / float(steps)), plot.y(value[size_t(i)])),
+             Point2(plot.x(plot.far * float(i + 1) / float(steps)), plot.y(value[size_t(i + 1)])), Color(0.95f));
+  }
+  drawText(image, Point2(plot.left, 8.0f), "TRANSMITTANCE (LOG) AGAINST DISTANCE", Color(0.9f), 1);
+}
+
+DebugOutput transmittanceView(const DebugViewRequest& request) {
+  const Scene& scene = request.scene;
+  const Accelerator accelerator(scene);
+  const Lights lights = Lights::fromScene(scene, kLinkedTasks.environment);
+  TraceContext context(scene, accelerator, lights, kLinkedTasks.lobes);
+  const IVec2 pixel = request.inspectedPixel();
+  const CameraBasis basis = cameraBasis(scene.camera);
+  const Ray ray =
+      generateCameraRay(scene.camera, basis, Point2(pixel) + Point2(0.5f), {scene.render.width, scene.render.height});
+  const std::vector<Crossing> crossings = crossingsAlong(scene, accelerator, ray);
   const float far = crossings.empty() ? 10.0f : crossings.back().t * 1.25f;
 
   // Your transmittance at kSteps distances, each the mean of kCalls calls
@@ -137,54 +207,14 @@ DebugOutput transmittanceView(const DebugViewRequest& request) {
 
   const int width = std::max(320, request.width), height = std::max(200, request.height);
   Image image(width, height, Color(0.02f));
-  const float left = 60.0f, right = float(width) - 20.0f, top = 30.0f, bottom = float(height) - 40.0f;
-  constexpr double kDecades = 6.0;  // log10 T from 0 down to -6
-  auto x = [&](float d) { return left + (right - left) * d / far; };
-  auto y = [&](double t) {
-    const double l = std::clamp(std::log10(std::max(t, 1e-30)), -kDecades, 0.0);
-    return float(top + (bottom - top) * (-l / kDecades));
-  };
-  for (int decade = 0; decade <= int(kDecades); ++decade) {
-    const float yy = y(std::pow(10.0, -decade));
-    drawLine(image, Point2(left, yy), Point2(right, yy), Color(0.12f));
-    drawText(image, Point2(6.0f, yy - 6.0f), "1E-" + std::to_string(decade), Color(0.6f), 1);
-  }
-  for (const Crossing& c : crossings) {
-    drawLine(image, Point2(x(c.t), top), Point2(x(c.t), bottom), c.interface ? Color(0.2f, 0.4f, 0.9f) : Color(0.6f));
-  }
-  // Guides: from your value at the start of each stretch, slope -sigmaT of the medium there.
-  float from = 0.0f;
-  MediumIndex in = scene.medium;
-  for (size_t k = 0; k <= crossings.size(); ++k) {
-    const float to = k < crossings.size() ? crossings[k].t : far;
-    if (in != kVacuum) {
-      const int i0 = std::min(kSteps, int(std::ceil(from / far * kSteps)));
-      const double t0 = value[size_t(i0)], d0 = far * double(i0) / kSteps;
-      for (float d = float(d0); d < to; d += far / 100.0f) {
-        if (int(d / far * 100.0f) % 2 == 0) {
-          const float d1 = std::min(to, d + far / 100.0f);
-          drawLine(image, Point2(x(d), y(t0 * std::exp(-double(scene.media[size_t(in)].sigmaT) * (d - d0)))),
-                   Point2(x(d1), y(t0 * std::exp(-double(scene.media[size_t(in)].sigmaT) * (d1 - d0)))),
-                   Color(0.9f, 0.6f, 0.1f));
-        }
-      }
-    }
-    if (k < crossings.size()) {
-      in = crossings[k].after;
-      if (!crossings[k].interface) break;  // past a surface: nothing gets through
-      from = to;
-    }
-  }
-  for (int i = 0; i < kSteps; ++i) {
-    drawLine(image, Point2(x(far * float(i) / kSteps), y(value[size_t(i)])),
-             Point2(x(far * float(i + 1) / kSteps), y(value[size_t(i + 1)])), Color(0.95f));
-  }
-  drawText(image, Point2(left, 8.0f), "TRANSMITTANCE (LOG) AGAINST DISTANCE", Color(0.9f), 1);
+  const TransmittancePlot plot(far, width, height);
+  drawDecadesAndCrossings(image, plot, crossings);
+  drawGuides(image, plot, scene, crossings, value);
+  drawCurve(image, plot, value);
 
-  std::string report = "camera ray of pixel (" + std::to_string(pixel.x) + ", " + std::to_string(pixel.y) +
-                       "), starting in " + (scene.medium == kVacuum ? std::string("a vacuum")
-                                                                   : "medium " + scene.media[size_t(scene.medium)].name) +
-                       "\n";
+  std::string report =
+      "camera ray of pixel (" + std::to_string(pixel.x) + ", " + std::to_string(pixel.y) + "), starting in " +
+      (scene.medium == kVacuum ? std::string("a vacuum") : "medium " + scene.media[size_t(scene.medium)].name) + "\n";
   for (const Crossing& c : crossings) {
     char line[160];
     const double before = meanTransmittance(c.t * (1.0f - 1e-4f), uint32_t(kSteps + 1));
