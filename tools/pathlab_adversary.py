@@ -1,5 +1,5 @@
 """Hostile submissions made mechanically (tools/adversary; the attack suite
-tests/grader/test_attacks.py and the host-programs test use the object-file
+grader/tests/test_attacks.py and the host-programs test use the object-file
 part): what a student could hand in to make the grader act on bytes they
 control, or to earn points the work behind them does not.
 
@@ -17,6 +17,7 @@ import tempfile
 from pathlib import Path
 
 import pathlab_tasks
+import pathlab_verdicts
 from pathlab_run import link_command
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -225,7 +226,7 @@ class Arena:
         folder, _ = self.tasks[task]
         listing = subprocess.run([str(self.build / "tests" / f"test-{folder}"), "--list-test-cases"],
                                  capture_output=True, text=True, timeout=60).stdout
-        return [(m.group(3), int(m.group(1)), m.group(2)) for m in re.finditer(r"^TEST (\d+) (\w+) (.*)$", listing, re.M)]
+        return pathlab_verdicts.parse_listing(listing)
 
     def judge(self, task: int, strategy: str, tests, log: Path = None, timeout: float = 300):
         """The test cases of `tests` that pass with this strategy."""
@@ -234,11 +235,12 @@ class Arena:
         os.close(handle)
         verdicts = Path(name)
         env = {k: v for k, v in os.environ.items() if not k.startswith("PATHLAB_")}
-        env.update(PATHLAB_CANDIDATE=str(self.candidates[task]), PATHLAB_ADVERSARY=strategy,
-                   PATHLAB_VERDICT_FILE=str(verdicts), PATHLAB_IMAGE_FAILURES_DIR=str(self.work / "pictures"))
+        env.update({pathlab_verdicts.CANDIDATE: str(self.candidates[task]), "PATHLAB_ADVERSARY": strategy,
+                    pathlab_verdicts.VERDICT_FILE: str(verdicts),
+                    pathlab_verdicts.IMAGE_FAILURES_DIR: str(self.work / "pictures")})
         if log:
             env["PATHLAB_ADVERSARY_LOG"] = str(log)
-        escaped = ",".join("".join("\\" + c if c in ",\\" else ("?" if c in "*[]" else c) for c in name) for name in tests)
+        escaped = ",".join(pathlab_verdicts.test_case_filter(name) for name in tests)
         try:
             run = subprocess.run([str(self.build / "tests" / f"test-{folder}"), f"--test-case={escaped}",
                                   "--no-version", "--no-intro"], env=env, cwd=self.work, capture_output=True,
@@ -248,9 +250,9 @@ class Arena:
         if "ADVERSARY: " in run.stdout:
             raise RuntimeError(f"task {task}, {strategy}: " + run.stdout.split("ADVERSARY: ", 1)[1].splitlines()[0])
         self.last_output = run.stdout
-        lines = verdicts.read_text().splitlines()
+        judged = pathlab_verdicts.Verdicts.read(verdicts)
         verdicts.unlink()
-        return [line.split(" ", 2)[2] for line in lines if line.startswith("PASS ")]
+        return [name for passed, _, name in judged.ran if passed]
 
     def tests_making(self, task: int, strategy: str):
         call = re.search(r"call=(\d+)", strategy).group(1)

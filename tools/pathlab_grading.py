@@ -19,6 +19,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
+import pathlab_verdicts as verdicts  # noqa: E402  (what a judge tells the grader: grader/suite/verdicts.json)
 from pathlab_run import clip as clip_to, link_command, run  # noqa: E402
 from pathlab_sandbox import JUDGE_MEMORY, MemoryWatch  # noqa: E402
 from pathlab_include_rule import LAYERS, canonical, files_read, system_include_dirs  # noqa: E402
@@ -45,8 +46,7 @@ def judge_manifest(build: Path, task: int):
     """(name, points, visibility) of task's test cases, from the judge's own listing (build/tests/test-NN-name)."""
     directory, _ = TASKS[task]
     code, listing = run([str(build / "tests" / f"test-{directory}"), "--list-test-cases"], timeout=60)
-    cases = [(m.group(3), int(m.group(1)), m.group(2))
-             for m in re.finditer(r"^TEST (\d+) (\w+) (.*)$", listing, re.M)]
+    cases = verdicts.parse_listing(listing)
     if not cases:
         raise RuntimeError(f"the judge test-{directory} listed no test cases:\n{clip(listing, 2000)}")
     return cases
@@ -169,8 +169,11 @@ class Grader:
                                                  scratch=None), timeout=20)
             if code == 0:
                 raise RuntimeError("isolation check failed: code in the sandbox can open a socket")
-        secrets = [ROOT / "solutions" / "01-camera-rays" / "camera_rays.cpp", ROOT / "grader" / "suite" / "listener.cpp",
-                   judge]
+        # The listener and the judge are in every grader's tree; the reference's source only in the course's.
+        listener = ROOT / "grader" / "suite" / "listener.cpp"
+        if not listener.exists():
+            raise RuntimeError(f"isolation check: {listener} is missing, so there is no secret to test the sandbox on")
+        secrets = [ROOT / "solutions" / "01-camera-rays" / "camera_rays.cpp", listener, judge]
         readable = [p for p in secrets if p.exists() and self.sandbox.can_read(p)]
         if readable:
             raise RuntimeError(f"isolation check failed: code in the sandbox can read {readable[0]}")
@@ -451,27 +454,19 @@ class Grader:
     def run_case(self, task, directory, name, points, visibility, index, launcher, limit):
         verdict = self.verdicts / f"verdict-{task}-{index}"
         env = {k: v for k, v in os.environ.items() if not k.startswith("PATHLAB_")}
-        env.update(PATHLAB_CANDIDATE=str(launcher), PATHLAB_VERDICT_FILE=str(verdict),
-                   PATHLAB_IMAGE_FAILURES_DIR=str(self.pictures))
-        escaped = "".join("\\" + c if c in ",\\" else ("?" if c in "*[]" else c) for c in name)
+        env.update({verdicts.CANDIDATE: str(launcher), verdicts.VERDICT_FILE: str(verdict),
+                    verdicts.IMAGE_FAILURES_DIR: str(self.pictures)})
         started = time.time()
         judge = {}  # its own memory is limited too: a hostile answer must fail this test, not the grade
         with self.watch() as watch:
-            code, out = run([str(self.build / "tests" / f"test-{directory}"), f"--test-case={escaped}",
+            code, out = run([str(self.build / "tests" / f"test-{directory}"), f"--test-case={verdicts.test_case_filter(name)}",
                              "--no-version", "--no-intro"], timeout=limit, env=env, memory_limit=self.judge_memory,
                             memory=judge)
         timing = (time.time() - started, limit)
         self.sandbox.clean_up()
         out = out.replace(f"{self.pictures}/", f"{self.pictures.name}/")  # named beside results.json
-        lines = verdict.read_text().splitlines() if verdict.exists() else []
-        ran = [l for l in lines if l.startswith(("PASS ", "FAIL "))]
-        for line in lines:  # "LEADERBOARD asc|desc VALUE NAME", in Gradescope's results.json form
-            parts = line.split(" ", 3)
-            if parts[0] == "LEADERBOARD" and len(parts) == 4 and parts[1] in ("asc", "desc"):
-                try:
-                    self.leaderboard[parts[3]] = {"name": parts[3], "value": float(parts[2]), "order": parts[1]}
-                except ValueError:
-                    pass
+        judged = verdicts.Verdicts.read(verdict)
+        self.leaderboard.update(judged.leaderboard)
         if watch.exceeded:
             self.record(task, name, 0, points, watch.message() + "\n" + out, visibility=visibility, timing=timing)
         elif judge.get("exceeded"):
@@ -481,9 +476,9 @@ class Grader:
         elif code is None:
             self.record(task, name, 0, points, f"timed out after {limit:g} s (an endless loop?)\n" + out,
                         visibility=visibility, timing=timing)
-        elif len(ran) == 1 and lines[-1] == "END" and ran[0].startswith("PASS ") and code == 0:
+        elif judged.passed_alone() and code == 0:
             self.record(task, name, points, points, "passed", visibility=visibility, timing=timing)
-        elif len(ran) == 1:
+        elif len(judged.ran) == 1:
             self.record(task, name, 0, points, out, visibility=visibility, timing=timing)
         else:
             self.record(task, name, 0, points, f"the test did not finish (judge exit code {code})\n" + out,

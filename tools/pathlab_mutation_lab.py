@@ -14,6 +14,7 @@ import time
 from pathlib import Path
 
 import pathlab_tasks
+import pathlab_verdicts
 from pathlab_mutants import Mutant
 from pathlab_run import link_command
 
@@ -129,7 +130,7 @@ class Lab:
         digest.update(" ".join(compile_argv + SUBMISSION_FLAGS).encode())
         start = time.time()
         reference = subprocess.run([str(judge), "--no-version", "--no-intro"], capture_output=True, text=True,
-                                   env={**os.environ, "PATHLAB_CANDIDATE": str(self.build / candidate)}, cwd=self.work)
+                                   env={**os.environ, pathlab_verdicts.CANDIDATE: str(self.build / candidate)}, cwd=self.work)
         seconds = time.time() - start
         if reference.returncode != 0:
             raise SystemExit(f"tools/mutate: the reference fails its own suite test-{folder}:\n{reference.stdout[-3000:]}")
@@ -180,7 +181,7 @@ class Lab:
 
     def run_judge(self, folder, exe, cwd, limit):
         env = {k: v for k, v in os.environ.items() if not k.startswith("PATHLAB_")}
-        env["PATHLAB_CANDIDATE"] = str(exe)
+        env[pathlab_verdicts.CANDIDATE] = str(exe)
         process = subprocess.Popen([str(self.build / "tests" / f"test-{folder}"), "--abort-after=1", "--no-version",
                                     "--no-intro"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                                    cwd=cwd, env=env, start_new_session=True)

@@ -6,7 +6,7 @@ max_score, output), which is Gradescope's adapter. The other platforms'
 adapters (tools/autolab, tools/prairielearn, tools/classroom) reshape that
 file here and decide nothing: every point is copied from a grader's test,
 and each converter is checked against the results it came from (the tests
-under tests/grader/ compare them test by test). A test whose visibility is
+under grader/tests/ compare them test by test). A test whose visibility is
 not "visible" is never shown there (shown()), but its points still count."""
 import base64
 import json

@@ -21,7 +21,6 @@
 #include "util/error.h"
 #include "util/input_file.h"
 #include "util/parallel.h"
-#include "util/platform.h"
 #include "util/random.h"
 #ifdef PATHLAB_HAVE_EMBREE
 #include "embree_scene.h"

@@ -6,7 +6,8 @@
 // With PATHLAB_VERDICT_FILE set (tools/grade does), each test case's
 // verdict is also appended to that file: "PASS|FAIL <points> <name>", then
 // "END" when the run finished; and any leaderboard entry a test records,
-// "LEADERBOARD asc|desc <value> <name>". The grader reads only this file, which the
+// "LEADERBOARD asc|desc <value> <name>" (each word and variable defined once,
+// in verdicts.json, for this file and the grader's Python). The grader reads only this file, which the
 // candidate cannot reach, never the judge's stdout.
 #include <algorithm>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "grading.h"
+#include "suite/verdicts.h"
 #include "wire/call.h"
 
 namespace pathlab::test {
@@ -24,14 +26,14 @@ namespace pathlab::test {
 const char* gradingText(int points, const char* hint, Visibility visibility) {
   static std::deque<std::string> texts;  // stable addresses
   static std::mutex mutex;
-  static const char* names[] = {"visible", "hidden", "after_due_date", "after_published"};
   std::lock_guard<std::mutex> lock(mutex);
-  texts.push_back("points=" + std::to_string(points) + "; visibility=" + names[int(visibility)] + "; hint=" + hint);
+  texts.push_back("points=" + std::to_string(points) + "; visibility=" + verdicts::kVisibilityNames[int(visibility)] +
+                  "; hint=" + hint);
   return texts.back().c_str();
 }
 
 void appendVerdictLine(const std::string& line) {
-  static const char* path = std::getenv("PATHLAB_VERDICT_FILE");
+  static const char* path = std::getenv(verdicts::kVerdictFileVariable);
   if (!path || !*path) return;
   if (std::FILE* f = std::fopen(path, "a")) {
     std::fprintf(f, "%s\n", line.c_str());
@@ -44,7 +46,8 @@ void recordLeaderboard(const std::string& name, double value, bool lowerIsBetter
   std::snprintf(number, sizeof number, "%.6g", value);
   std::printf("leaderboard: %s = %s (%s is better; ungraded)\n", name.c_str(), number,
               lowerIsBetter ? "lower" : "higher");
-  appendVerdictLine(std::string("LEADERBOARD ") + (lowerIsBetter ? "asc " : "desc ") + number + " " + name);
+  appendVerdictLine(std::string(verdicts::kLeaderboard) + " " +
+                    (lowerIsBetter ? verdicts::kLowerIsBetter : verdicts::kHigherIsBetter) + " " + number + " " + name);
 }
 
 namespace {
@@ -75,7 +78,7 @@ int pointsOf(const char* description) {
 std::string visibilityOf(const char* description) {
   std::string text = description ? description : "";
   size_t at = text.find("visibility=");
-  return at == std::string::npos ? "visible" : text.substr(at + 11, text.find(';', at) - at - 11);
+  return at == std::string::npos ? verdicts::kVisibilityNames[0] : text.substr(at + 11, text.find(';', at) - at - 11);
 }
 
 std::string hintOf(const char* description) {
@@ -92,7 +95,7 @@ struct GradingListener : doctest::IReporter {
   // manifest tools/grade uses to run each case in its own process.
   void report_query(const doctest::QueryData& query) override {
     for (unsigned i = 0; i < query.num_data; ++i) {
-      std::printf("TEST %d %s %s\n", pointsOf(query.data[i]->m_description),
+      std::printf("%s %d %s %s\n", verdicts::kListing, pointsOf(query.data[i]->m_description),
                   visibilityOf(query.data[i]->m_description).c_str(), query.data[i]->m_name);
     }
   }
@@ -121,7 +124,8 @@ struct GradingListener : doctest::IReporter {
       std::printf("HINT (%s, %d pts): %s\n", current_->m_name, points, hint.c_str());
       printCandidateOutput();
     }
-    verdict(std::string(stats.testCaseSuccess ? "PASS " : "FAIL ") + std::to_string(points) + " " + current_->m_name);
+    verdict(std::string(stats.testCaseSuccess ? verdicts::kPass : verdicts::kFail) + " " + std::to_string(points) +
+            " " + current_->m_name);
   }
 
   static void printCandidateOutput() {
@@ -151,7 +155,7 @@ struct GradingListener : doctest::IReporter {
   void test_run_end(const doctest::TestRunStats&) override {
     if (cases_ > 0) std::printf("SCORE %d/%d points (%d/%d test cases passed)\n", earned_, total_, passed_, cases_);
     std::fflush(stdout);
-    verdict("END");
+    verdict(verdicts::kEnd);
   }
 
   const doctest::TestCaseData* current_ = nullptr;

@@ -15,6 +15,7 @@
 #include "call.h"
 #include "candidate_process.h"
 #include "protocol.h"
+#include "suite/verdicts.h"
 #include "util/platform.h"
 
 #if defined(__GLIBC__)
@@ -32,7 +33,7 @@ constexpr size_t kOutputKept = 8192;  // bytes of the candidate's output shown u
 constexpr int kDeathsPerTest = 3;
 
 std::string candidatePath() {
-  if (const char* path = std::getenv("PATHLAB_CANDIDATE"); path && *path) return path;
+  if (const char* path = std::getenv(verdicts::kCandidateVariable); path && *path) return path;
   const std::string exe = currentExecutablePath();
   if (exe.empty()) throw CandidateError("cannot find this executable's folder: set PATHLAB_CANDIDATE");
   // test-NN-name's candidate is candidate-NN-name in the same folder.

@@ -8,12 +8,13 @@
 #include <numeric>
 #include <sstream>
 
+#include "suite/verdicts.h"
 #include "util/error.h"
 
 namespace pathlab::test {
 
 std::string failurePicturesDir() {
-  const char* variable = std::getenv("PATHLAB_IMAGE_FAILURES_DIR");
+  const char* variable = std::getenv(verdicts::kImageFailuresVariable);
   const std::string dir = variable && *variable ? variable : "image-failures";
   std::error_code error;
   std::filesystem::create_directories(dir, error);

@@ -4,7 +4,7 @@
 # and the PathLab tree in source/; Gradescope unpacks it into
 # /autograder/source, so the tree is /autograder/source/source.
 # AUTOGRADER_ROOT (default /autograder) stands in for /autograder in
-# tests/grader/test_gradescope.py, which also sets PATHLAB_SKIP_APT=1: the
+# grader/tests/test_gradescope.py, which also sets PATHLAB_SKIP_APT=1: the
 # packages must then be installed already (checked by tools/install-grader).
 set -euo pipefail
 autograder=${AUTOGRADER_ROOT:-/autograder}

@@ -102,7 +102,7 @@ def main() -> int:
     tasks = pathlab_tasks.tasks()
     (folder1, file1), (folder2, file2) = tasks[1], tasks[2]
     ir = (root / "tasks" / folder1 / file1).read_text() + "\n" + \
-        (root / "tests/grader/attacks/lto-ir.inc").read_text().replace("@ROOT@", str(root))
+        (root / "grader/tests/attacks/lto-ir.inc").read_text().replace("@ROOT@", str(root))
     (submission / file1).write_text(lto_sections(ir, compile_argv(build, 1), scratch / "ir"))
     shutil.copy(root / "solutions" / folder2 / file2, submission / file2)
     out, trace = scratch / "results.json", scratch / "trace.txt"

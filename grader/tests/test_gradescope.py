@@ -15,7 +15,7 @@ AUTOGRADER_ROOT/results/results.json in Gradescope's schema:
     both within a few; the reference's full marks in every suite are
     grader-reference-full-marks' to check on each.)
   - five mutants and two alternates (SAME_SCORE_FILES: one task file each):
-    graded, and kept with their submissions for tests/grader/test_check.py,
+    graded, and kept with their submissions for grader/tests/test_check.py,
     which checks that a student's tools/check gives the same per-test scores.
 Every submission and its results.json are kept in WORK_DIR/gradescope-results/.
 Nothing may be written to the real /autograder. The scratch folder is

@@ -1,4 +1,4 @@
-"""Hostile submissions against tools/grade (tests/grader/attacks/*.cpp).
+"""Hostile submissions against tools/grade (grader/tests/attacks/*.cpp).
 
 Each attack is a task file (task 1's, or the task its "task: NN" names):
 the stub (or the reference, for an attack that also does the work
@@ -224,7 +224,7 @@ def main() -> int:
     tcp.start()
     local.start()
     folders = world_writable_folders()
-    attacks = sorted((root / "tests/grader/attacks").glob("*.cpp"))
+    attacks = sorted((root / "grader/tests/attacks").glob("*.cpp"))
     if only:
         attacks = [a for a in attacks if a.stem in only]
     elif half is not None and os.environ.get("PATHLAB_ATTACKS_ALL") != "1":
@@ -252,7 +252,7 @@ def main() -> int:
             judges_before[task] = judge_digest(task)
         directory, file_name = TASKS[task]
         if uses:
-            text = (root / "tests/grader/attacks" / uses).read_text() + "\n" + text
+            text = (root / "grader/tests/attacks" / uses).read_text() + "\n" + text
         out = work / f"{attack.stem}.json"
         values = {"@ROOT@": str(root), "@BUILD@": str(grade_build), "@OUT@": str(out), "@LEAK@": str(LEAK_FILE),
                   "@PORT@": str(tcp.server.getsockname()[1]), "@ABSTRACT@": abstract_name}

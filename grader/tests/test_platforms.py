@@ -44,6 +44,7 @@ usage: test_platforms.py REPO_ROOT WORK_DIR [--keep]   (its scratch is a new fol
 outside the repository: the jobs' unprivileged uid must reach it while other grading tests make the
 repository private; WORK_DIR is unused)"""
 import base64
+import functools
 import json
 import os
 import runpy
@@ -149,10 +150,16 @@ def autoresult_problems(result, problems, columns, kind) -> bool:
     return True
 
 
+@functools.cache
+def generated_variants():
+    """Every mutant and alternate, made as the build makes them (tests/mutants/generate.py): nothing
+    generated is in git."""
+    return runpy.run_path(str(root / "tests/mutants/generate.py"))["variants"](root)
+
+
 def generated_mutant(n, last=False):
-    """Task n's first (or last) mutant by name, made as the build makes it (tests/mutants/generate.py)
-    into the scratch folder: nothing generated is in git."""
-    made = runpy.run_path(str(root / "tests/mutants/generate.py"))["variants"](root)
+    """Task n's first (or last) mutant by name, written into the scratch folder."""
+    made = generated_variants()
     rel = sorted(r for r in made if r.startswith(f"mutants/{TASKS[n][0]}/"))[-1 if last else 0]
     path = work / "variants" / rel
     path.parent.mkdir(parents=True, exist_ok=True)
