@@ -3,7 +3,7 @@
 
 "The folders": the tree names only folders that exist (NN-name: the
 numbered task folders), and names every folder of the repository's top
-level and of framework/, apps/, tests/, media/ and docs/. A folder whose
+level and of framework/, grader/, apps/, tests/, media/ and docs/. A folder whose
 line says "not in the student release", and the folders in it, may be
 missing where solutions/ is not; one that says "only in the student
 release" may be missing where solutions/ is.
@@ -19,7 +19,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-LISTED_IN_FULL = ("framework", "apps", "tests", "media", "docs")
+LISTED_IN_FULL = ("framework", "grader", "apps", "tests", "media", "docs")
 
 
 def section(text: str, heading: str) -> str:
