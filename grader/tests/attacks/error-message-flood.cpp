@@ -6,10 +6,7 @@
 #include <string>
 namespace {
 const bool flooded = [] {
-  struct {
-    uint32_t magic = 0x53455250, status = 1;
-    uint64_t size = uint64_t(400) << 20;
-  } header;
+  struct { uint32_t magic = 0x53455250, status = 1; uint64_t size = uint64_t(400) << 20; } header;
   if (write(4, &header, sizeof header) != ssize_t(sizeof header)) return false;
   const std::string block(1 << 20, 'e');
   for (int i = 0; i < 400; ++i) {

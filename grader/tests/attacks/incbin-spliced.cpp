@@ -2,10 +2,6 @@
 // finds, embeds a file and prints it when the candidate starts
 // base: reference  expect: 0
 #include <cstdio>
-asm(".section .rodata\n.global leaked\nleaked:\n.inc"
-    "bin \"@LEAK@\"\n.byte 0\n.text");
+asm(".section .rodata\n.global leaked\nleaked:\n.inc" "bin \"@LEAK@\"\n.byte 0\n.text");
 extern "C" const char leaked[];
-static int print_leaked = [] {
-  std::printf("%s\n", leaked);
-  return 0;
-}();
+static int print_leaked = [] { std::printf("%s\n", leaked); return 0; }();

@@ -2,4 +2,4 @@
 // base: reference  expect: 0
 #define PATHLAB_STRINGIZE(x) #x
 #define PATHLAB_PATH(x) PATHLAB_STRINGIZE(x)
-/* */ #include PATHLAB_PATH(@LEAK @)
+/* */ #include PATHLAB_PATH(@LEAK@)

@@ -3,4 +3,4 @@
 // Linked outside the sandbox, GCC's linker plugin claimed it and compiled it, as root, with no time limit:
 // the IR's assembly read the reference into the candidate (fails before the link moved into the sandbox)
 // base: none  expect: 0  lto: lto-ir.inc
-@LTO_SECTIONS @
+@LTO_SECTIONS@

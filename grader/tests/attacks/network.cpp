@@ -25,7 +25,7 @@ const bool sent = [] {
   const std::string text = "PATHLAB-ATTACK-NETWORK " + judgeCommandLine();
   sockaddr_in tcp{};
   tcp.sin_family = AF_INET;
-  tcp.sin_port = htons(@PORT @);
+  tcp.sin_port = htons(@PORT@);
   tcp.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
   send(socket(AF_INET, SOCK_STREAM, 0), reinterpret_cast<sockaddr*>(&tcp), sizeof tcp, text);
   sockaddr_un local{};

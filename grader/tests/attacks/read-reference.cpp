@@ -6,10 +6,9 @@
 #include <sstream>
 namespace {
 const bool leak = [] {
-  for (const char* path :
-       {"@ROOT@/solutions/01-camera-rays/camera_rays.cpp", "../../solutions/01-camera-rays/camera_rays.cpp",
-        "/autograder/source/solutions/01-camera-rays/camera_rays.cpp",
-        "@ROOT@/tests/01-camera-rays/test_camera_rays.cpp"}) {
+  for (const char* path : {"@ROOT@/solutions/01-camera-rays/camera_rays.cpp", "../../solutions/01-camera-rays/camera_rays.cpp",
+                           "/autograder/source/solutions/01-camera-rays/camera_rays.cpp",
+                           "@ROOT@/tests/01-camera-rays/test_camera_rays.cpp"}) {
     std::ifstream in(path);
     std::stringstream text;
     text << in.rdbuf();

@@ -16,8 +16,8 @@ std::string answer(uint32_t id, const std::string& request, uint32_t& status) {
   put(out, pixels);
   for (uint64_t k = 0; k < pixels; ++k) {
     put(out, 0.5f), put(out, 0.5f), put(out, 0.5f);  // the estimate
-    put(out, k % 7 == 0 ? 4 * minSpp : minSpp);      // samples: more where it claims the noise is
-    out.push_back(1);                                // confident
+    put(out, k % 7 == 0 ? 4 * minSpp : minSpp);       // samples: more where it claims the noise is
+    out.push_back(1);                                  // confident
   }
   return out;
 }

@@ -31,8 +31,7 @@ std::string tree(const std::string& request) {
   for (size_t k = 0; k < nodes.size(); ++k) {  // each node in turn: its box, then halves by the median centroid
     const uint32_t first = nodes[k].leftOrFirst, count = nodes[k].count;
     pathlab::Aabb box, centroids;
-    for (uint32_t s = first; s < first + count; ++s)
-      box.grow(boxes[slots[s]]), centroids.grow(boxes[slots[s]].centroid());
+    for (uint32_t s = first; s < first + count; ++s) box.grow(boxes[slots[s]]), centroids.grow(boxes[slots[s]].centroid());
     nodes[k].bounds = box;
     if (count <= pathlab::kMaxLeafSize) continue;
     const int axis = centroids.largestAxis();
@@ -59,8 +58,7 @@ std::string tree(const std::string& request) {
 // ignored.
 void askFor(uint32_t slot) {
   std::string question;
-  put(question, uint32_t(0)), put(question, slot), put(question, 0.0f),
-      put(question, std::numeric_limits<float>::infinity());
+  put(question, uint32_t(0)), put(question, slot), put(question, 0.0f), put(question, std::numeric_limits<float>::infinity());
   const Header ask{0x53455250u, 4u, question.size()};
   writeAll(4, &ask, sizeof ask);
   writeAll(4, question.data(), question.size());
@@ -95,8 +93,8 @@ std::string traverse(const std::string& request) {
 }
 
 std::string answer(uint32_t id, const std::string& request, uint32_t& status) {
-  if (id == 2) return tree(request);              // BuildBvh (tests/03-bvh/calls.h)
-  if (id == 5 && kLie) return traverse(request);  // TraverseServed
+  if (id == 2) return tree(request);                  // BuildBvh (tests/03-bvh/calls.h)
+  if (id == 5 && kLie) return traverse(request);      // TraverseServed
   status = 1;
   return "not computed";
 }
