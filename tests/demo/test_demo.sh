@@ -8,6 +8,7 @@
 set -uo pipefail
 demo=$1/pathlab-demo
 task7=${2:-reference}
+root=$(realpath "$(dirname "$(realpath "${BASH_SOURCE[0]}")")/../..")
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 failures=0
@@ -94,9 +95,9 @@ check_error "give a demo name"
 if [[ $3 == OFF ]]; then
   "$demo" annulus --gui > /dev/null 2> "$out/nogui.err" && fail "--gui succeeded in a build without a window"
   grep -q "this build has no window" "$out/nogui.err" || fail "--gui without a window: $(cat "$out/nogui.err")"
-elif command -v xvfb-run > /dev/null; then
+elif command -v Xvfb > /dev/null; then
   # (Mesa's GL driver leaks by LeakSanitizer's count, unloaded before the report: no leak check for the window.)
-  if ASAN_OPTIONS=detect_leaks=0 xvfb-run -a -f "$out/Xauthority" -s "-screen 0 1600x1000x24" "$demo" annulus --gui --screenshot "$out/gui.png" \
+  if ASAN_OPTIONS=detect_leaks=0 "$root/tools/with-xvfb" "$demo" annulus --gui --screenshot "$out/gui.png" \
       > /dev/null 2> "$out/gui.err"; then
     spread=$(convert "$out/gui.png" -colorspace Gray -format "%[fx:standard_deviation]" info:)
     expect "the demo window is not blank ($spread)" "$spread > 0.05"

@@ -50,11 +50,10 @@ check_todo_lines() {
   done < <(grep -E '^task [0-9]+ not implemented:' "$1")
 }
 
-command -v xvfb-run > /dev/null || { echo "xvfb-run is missing: apt-get install xvfb xauth"; exit 1; }
+command -v Xvfb > /dev/null || { echo "Xvfb is missing: apt-get install xvfb"; exit 1; }
 command -v convert > /dev/null || { echo "ImageMagick is missing: apt-get install imagemagick"; exit 1; }
-# Our own X authority file: xvfb-run's temporary folder for it has failed to
-# clean up under a loaded CI machine (exit 5 after the program had finished).
-xrun() { xvfb-run -a -f "$out/Xauthority" -s "-screen 0 1600x1000x24" "$@"; }
+# Each run on its own display (xvfb-run -a's displays raced under a loaded CI).
+xrun() { "$root/tools/with-xvfb" "$@"; }
 
 # Standard deviation of an image's grey levels, 0..1: a blank window is ~0.
 spread() { convert "$1" -colorspace Gray -format "%[fx:standard_deviation]" info:; }
@@ -168,7 +167,8 @@ fi
 # TSan (PATHLAB_TEST_RACES_ONLY=1): the session's panels ran the same render
 # worker, and panel 7 took TSan 32 s.
 if [[ -z ${PATHLAB_TEST_RACES_ONLY:-} ]]; then
-  xrun "$gui" --panel 7 --screenshot "$out/panel7.png" > /dev/null 2>&1 || fail "--panel 7 --screenshot exited with $?"
+  xrun "$gui" --panel 7 --screenshot "$out/panel7.png" > /dev/null 2> "$out/panel7.err" ||
+    fail "--panel 7 --screenshot exited with $?: $(tail -5 "$out/panel7.err")"
   [[ -s $out/panel7.png ]] && { s=$(spread "$out/panel7.png"); expect "panel7.png is not blank ($s)" "$s > 0.08"; }
 else
   echo "skipped under TSan (PATHLAB_TEST_RACES_ONLY): --panel 7 --screenshot"

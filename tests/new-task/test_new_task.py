@@ -284,8 +284,8 @@ def gui_lab_and_views():
     script = work / "session.txt"
     script.write_text(f"panel {N}\nwait\nwait-panel\nscreenshot {shot}\npanels\nlab {NAME}-triangle\nwait-panel\n"
                       "lab-verdict\nquit\n")
-    session = run(["xvfb-run", "-a", "-f", work / "Xauthority", "-s", "-screen 0 1600x1000x24",
-                   build / "pathlab-gui", "--script", script, "--timeout", "300"], what="pathlab-gui --script")
+    session = run([root / "tools" / "with-xvfb", build / "pathlab-gui", "--script", script, "--timeout", "300"],
+                  what="pathlab-gui --script")
     log = session.stdout
     panels = next((line for line in log.splitlines() if line.startswith("script: panels -> ")), "")
     expect(re.search(rf"-> {N + 1} buttons in \d+ rows, 0 cut: ", panels) and
