@@ -16,9 +16,9 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-import pathlab_tasks
-import pathlab_verdicts
-from pathlab_run import link_command
+from tools import pathlab_tasks
+from grader.driver import verdicts as verdict_format
+from grader.driver.processes import link_command
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -226,7 +226,7 @@ class Arena:
         folder, _ = self.tasks[task]
         listing = subprocess.run([str(self.build / "tests" / f"test-{folder}"), "--list-test-cases"],
                                  capture_output=True, text=True, timeout=60).stdout
-        return pathlab_verdicts.parse_listing(listing)
+        return verdict_format.parse_listing(listing)
 
     def judge(self, task: int, strategy: str, tests, log: Path = None, timeout: float = 300):
         """The test cases of `tests` that pass with this strategy."""
@@ -235,12 +235,12 @@ class Arena:
         os.close(handle)
         verdicts = Path(name)
         env = {k: v for k, v in os.environ.items() if not k.startswith("PATHLAB_")}
-        env.update({pathlab_verdicts.CANDIDATE: str(self.candidates[task]), "PATHLAB_ADVERSARY": strategy,
-                    pathlab_verdicts.VERDICT_FILE: str(verdicts),
-                    pathlab_verdicts.IMAGE_FAILURES_DIR: str(self.work / "pictures")})
+        env.update({verdict_format.CANDIDATE: str(self.candidates[task]), "PATHLAB_ADVERSARY": strategy,
+                    verdict_format.VERDICT_FILE: str(verdicts),
+                    verdict_format.IMAGE_FAILURES_DIR: str(self.work / "pictures")})
         if log:
             env["PATHLAB_ADVERSARY_LOG"] = str(log)
-        escaped = ",".join(pathlab_verdicts.test_case_filter(name) for name in tests)
+        escaped = ",".join(verdict_format.test_case_filter(name) for name in tests)
         try:
             run = subprocess.run([str(self.build / "tests" / f"test-{folder}"), f"--test-case={escaped}",
                                   "--no-version", "--no-intro"], env=env, cwd=self.work, capture_output=True,
@@ -250,7 +250,7 @@ class Arena:
         if "ADVERSARY: " in run.stdout:
             raise RuntimeError(f"task {task}, {strategy}: " + run.stdout.split("ADVERSARY: ", 1)[1].splitlines()[0])
         self.last_output = run.stdout
-        judged = pathlab_verdicts.Verdicts.read(verdicts)
+        judged = verdict_format.Verdicts.read(verdicts)
         verdicts.unlink()
         return [name for passed, _, name in judged.ran if passed]
 

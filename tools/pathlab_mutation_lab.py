@@ -13,10 +13,10 @@ import threading
 import time
 from pathlib import Path
 
-import pathlab_tasks
-import pathlab_verdicts
-from pathlab_mutants import Mutant
-from pathlab_run import link_command
+from tools import pathlab_tasks
+from grader.driver import verdicts as verdict_format
+from tools.pathlab_mutants import Mutant
+from grader.driver.processes import link_command
 
 ROOT = Path(__file__).resolve().parent.parent
 REVIEWED = ROOT / "tests" / "mutants" / "survivors.txt"
@@ -130,7 +130,7 @@ class Lab:
         digest.update(" ".join(compile_argv + SUBMISSION_FLAGS).encode())
         start = time.time()
         reference = subprocess.run([str(judge), "--no-version", "--no-intro"], capture_output=True, text=True,
-                                   env={**os.environ, pathlab_verdicts.CANDIDATE: str(self.build / candidate)}, cwd=self.work)
+                                   env={**os.environ, verdict_format.CANDIDATE: str(self.build / candidate)}, cwd=self.work)
         seconds = time.time() - start
         if reference.returncode != 0:
             raise SystemExit(f"tools/mutate: the reference fails its own suite test-{folder}:\n{reference.stdout[-3000:]}")
@@ -181,7 +181,7 @@ class Lab:
 
     def run_judge(self, folder, exe, cwd, limit):
         env = {k: v for k, v in os.environ.items() if not k.startswith("PATHLAB_")}
-        env[pathlab_verdicts.CANDIDATE] = str(exe)
+        env[verdict_format.CANDIDATE] = str(exe)
         process = subprocess.Popen([str(self.build / "tests" / f"test-{folder}"), "--abort-after=1", "--no-version",
                                     "--no-intro"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                                    cwd=cwd, env=env, start_new_session=True)

@@ -34,7 +34,7 @@ import zipfile
 from dataclasses import dataclass
 from pathlib import Path
 
-import pathlab_tasks
+from tools import pathlab_tasks
 
 # Stands in for Tango's "autograde" user (PATHLAB_PLATFORMS_UID: tests running side by side use their own).
 TANGO_UID = int(os.environ.get("PATHLAB_PLATFORMS_UID", "64995"))

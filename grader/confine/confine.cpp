@@ -1,6 +1,6 @@
 // pathlab-confine PROGRAM [ARGS...]: runs PROGRAM with the system calls that
 // reach beyond the process refused (EACCES), for the grader's uid sandbox
-// (tools/pathlab_sandbox.py), where Gradescope's container allows no
+// (grader/driver/sandbox.py), where Gradescope's container allows no
 // namespaces: bubblewrap's network and IPC namespaces do this job elsewhere.
 //
 // Refused, because a compiler and a candidate need none of them and each is a

@@ -41,16 +41,15 @@ from pathlib import Path
 import yaml  # Debian's python3-yaml (tools/packages.sh, pathlab_test)
 
 root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
-sys.path.insert(0, str(root / "tests/support"))
-from fake_github import FakeGitHub  # noqa: E402
-from scratch import finish  # noqa: E402
+sys.path.insert(0, str(root))  # the repository: the import root (docs/architecture.md)
+from tests.support.fake_github import FakeGitHub  # noqa: E402
+from tests.support.scratch import finish  # noqa: E402
 keep = "--keep" in sys.argv[3:]
 prepare_only = "--prepare" in sys.argv[3:]
 graded = work_dir / "gradescope-results"
 work = work_dir / "student-check"
 release = work / "release"
-sys.path.insert(0, str(root / "tools"))
-import pathlab_tasks  # noqa: E402
+from tools import pathlab_tasks  # noqa: E402
 CORE = [int(n) for n in pathlab_tasks.core_tasks().split(",")]
 WITHHELD = [n for n in pathlab_tasks.tasks(root) if n not in CORE]  # the extensions: not handed out
 

@@ -39,11 +39,10 @@ work = work_dir / "gradescope"
 autograder = work / "autograder"  # stands in for /autograder
 REAL = Path("/autograder")
 SETUP_TIMEOUT, GRADE_TIMEOUT = 1200, 900
-sys.path.insert(0, str(root / "tools"))
-import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
-from pathlab_platforms import unpack  # noqa: E402  (like unzip, as Gradescope unpacks the zip)
-sys.path.insert(0, str(root / "tests/support"))
-from scratch import finish  # noqa: E402
+sys.path.insert(0, str(root))  # the repository: the import root (docs/architecture.md)
+from tools import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
+from tools.pathlab_platforms import unpack  # noqa: E402  (like unzip, as Gradescope unpacks the zip)
+from tests.support.scratch import finish  # noqa: E402
 ALL_TASKS = sorted(pathlab_tasks.tasks(root))
 VISIBILITIES = {"hidden", "after_due_date", "after_published", "visible"}
 # Graded here and by a student's tools/check (test_check.py): mistakes that

@@ -26,9 +26,9 @@ from pathlib import Path
 root, work, build = (Path(a).resolve() for a in sys.argv[1:4])
 sandbox = sys.argv[sys.argv.index("--sandbox") + 1] if "--sandbox" in sys.argv else "bwrap"
 sys.dont_write_bytecode = True
-sys.path.insert(0, str(root / "tools"))
-import pathlab_tasks  # noqa: E402
-from pathlab_adversary import compile_argv, lto_sections  # noqa: E402
+sys.path.insert(0, str(root))  # the repository: the import root (docs/architecture.md)
+from tools import pathlab_tasks
+from tools.pathlab_adversary import compile_argv, lto_sections  # noqa: E402
 
 PAGE = root / "docs" / "threat-model.md"
 HEADING = "## Programs the grading path runs outside the sandbox"

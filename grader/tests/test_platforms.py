@@ -60,13 +60,12 @@ keep = "--keep" in sys.argv[3:]
 # other grading tests make the repository private (mode 0700) while they grade.
 work = Path(tempfile.mkdtemp(prefix="pathlab-platforms-"))
 work.chmod(0o755)
-sys.path.insert(0, str(root / "tools"))
-import pathlab_platforms as platforms  # noqa: E402  (each platform's run, as tools/try-platform runs it)
-import pathlab_results  # noqa: E402
-import pathlab_tasks  # noqa: E402
-from pathlab_grading import judge_manifest  # noqa: E402
-sys.path.insert(0, str(root / "tests/support"))
-from scratch import finish  # noqa: E402
+sys.path.insert(0, str(root))  # the repository: the import root (docs/architecture.md)
+from tools import pathlab_platforms as platforms  # noqa: E402  (each platform's run, as tools/try-platform runs it)
+from grader.driver import results as results_format
+from tools import pathlab_tasks
+from grader.driver.grading import judge_manifest
+from tests.support.scratch import finish  # noqa: E402
 
 TASKS = pathlab_tasks.tasks(root)
 GRADING_UID = platforms.TANGO_UID  # PATHLAB_PLATFORMS_UID
@@ -101,7 +100,7 @@ def direct_grade(files, tasks, name) -> dict:
                            f"tools/grade {name}")
     if not out.exists():
         raise SystemExit(f"FAIL: tools/grade wrote nothing for {name}:\n{graded.stderr[-2000:]}")
-    return pathlab_results.load(out)
+    return results_format.load(out)
 
 
 # ---------------------------------------------------------------- Autolab
@@ -189,7 +188,7 @@ def check_autolab(pair, single):
             fail(f"autolab reference: {scores}, not every maximum {maxima}")
         if kind == "half-done":
             graded = direct_grade(task_files(kinds), pair, "autolab-half-done")
-            want = {f"Task {n}": e for n, (e, _) in pathlab_results.per_task(graded, pair).items()}
+            want = {f"Task {n}": e for n, (e, _) in results_format.per_task(graded, pair).items()}
             board = {e["name"]: e["value"] for e in graded.get("leaderboard", [])}
             if scores != want:
                 fail(f"autolab half-done: {scores}, tools/grade {want}")
@@ -321,7 +320,7 @@ def check_prairielearn(tasks):
                       "tools/grade's points")
             if kind == "stub":  # PrairieLearn's 1 MB rule, on 20 KB (the stub's are about 70): within it, same points
                 limit = 20_000
-                small = pathlab_results.prairielearn(graded, work / "direct", limit=limit)
+                small = results_format.prairielearn(graded, work / "direct", limit=limit)
                 kept = {t["name"]: (t["points"], t["max_points"]) for t in small["tests"]}
                 if len(json.dumps(small).encode()) > limit or kept != want or "left out" not in small["output"]:
                     fail(f"prairielearn task {n}: results cut to {limit} bytes came to "

@@ -2,9 +2,9 @@
 
 The judge (verdict_round_trip.cpp, linked with pathlab_judge) prints its
 listing and writes its verdicts with the words of grader/suite/verdicts.json,
-made into C++ by CMake; tools/pathlab_verdicts.py reads them with the same
+made into C++ by CMake; grader/driver/verdicts.py reads them with the same
 file's words. Each test case is run alone as tools/grade runs one (selected by
-pathlab_verdicts.test_case_filter, its verdict file named by the variable the
+verdict_format.test_case_filter, its verdict file named by the variable the
 JSON names), then all at once; the grader must read back each one's name,
 points, visibility, outcome and leaderboard entries exactly.
 
@@ -15,9 +15,9 @@ import sys
 import tempfile
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
-import pathlab_results  # noqa: E402
-import pathlab_verdicts  # noqa: E402
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # the repository: the import root (docs/architecture.md)
+from grader.driver import results as results_format
+from grader.driver import verdicts as verdict_format
 
 # (name, points, visibility, passes), in the judge's order.
 EXPECTED = [
@@ -33,25 +33,25 @@ LEADERBOARD = {"rays per second": {"name": "rays per second", "value": 1.5e6, "o
 
 def run_judge(judge: str, names, verdict_file: Path):
     env = {k: v for k, v in os.environ.items() if not k.startswith("PATHLAB_")}
-    env[pathlab_verdicts.VERDICT_FILE] = str(verdict_file)
-    selection = ",".join(pathlab_verdicts.test_case_filter(name) for name in names)
+    env[verdict_format.VERDICT_FILE] = str(verdict_file)
+    selection = ",".join(verdict_format.test_case_filter(name) for name in names)
     run = subprocess.run([judge, f"--test-case={selection}", "--no-version", "--no-intro"], env=env,
                          capture_output=True, text=True, timeout=60)
-    return run.returncode, pathlab_verdicts.Verdicts.read(verdict_file)
+    return run.returncode, verdict_format.Verdicts.read(verdict_file)
 
 
 def main() -> int:
     judge = sys.argv[1]
     problems = []
     listing = subprocess.run([judge, "--list-test-cases"], capture_output=True, text=True, timeout=60).stdout
-    listed = pathlab_verdicts.parse_listing(listing)
+    listed = verdict_format.parse_listing(listing)
     if listed != [(name, points, visibility) for name, points, visibility, _ in EXPECTED]:
         problems.append(f"the listing reads back as {listed}")
     for name, points, visibility, passes in EXPECTED:
-        if visibility not in pathlab_verdicts.VISIBILITIES:
-            problems.append(f"{name}: visibility {visibility} is not one of {pathlab_verdicts.VISIBILITIES}")
-        if pathlab_results.shown(visibility) != (visibility == pathlab_verdicts.VISIBLE):
-            problems.append(f"{name}: the platforms would {'not ' * pathlab_results.shown(visibility)}show it")
+        if visibility not in verdict_format.VISIBILITIES:
+            problems.append(f"{name}: visibility {visibility} is not one of {verdict_format.VISIBILITIES}")
+        if results_format.shown(visibility) != (visibility == verdict_format.VISIBLE):
+            problems.append(f"{name}: the platforms would {'not ' * results_format.shown(visibility)}show it")
     with tempfile.TemporaryDirectory() as scratch:
         for index, (name, points, _, passes) in enumerate(EXPECTED):
             code, judged = run_judge(judge, [name], Path(scratch) / f"alone-{index}")
@@ -66,8 +66,8 @@ def main() -> int:
         if judged.ran != [(passes, points, name) for name, points, _, passes in EXPECTED] or not judged.finished:
             problems.append(f"all at once: read back as {judged.ran}, finished {judged.finished}")
     # The reader follows the JSON's words, not words of its own: with another listing word it finds nothing.
-    pathlab_verdicts.SPEC["listing"] = "CASE"
-    if pathlab_verdicts.parse_listing(listing):
+    verdict_format.SPEC["listing"] = "CASE"
+    if verdict_format.parse_listing(listing):
         problems.append("the listing is read with a word verdicts.json does not give")
     for problem in problems:
         print("FAIL:", problem)

@@ -33,10 +33,9 @@ from pathlib import Path
 
 root, work = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
 sys.dont_write_bytecode = True  # no __pycache__ left in the tree's tools/
-sys.path.insert(0, str(root / "tools"))
-sys.path.insert(0, str(root / "tests/support"))
-import pathlab_results  # noqa: E402
-from fake_github import FakeGitHub  # noqa: E402
+sys.path.insert(0, str(root))  # the repository: the import root (docs/architecture.md)
+from grader.driver import results as results_format  # noqa: E402
+from tests.support.fake_github import FakeGitHub  # noqa: E402
 
 MARK = "SECRET"
 failures = []
@@ -88,9 +87,9 @@ tests = [
 ]
 results = {"score": 10, "output": "10 of 21 points", "tests": tests}
 (scratch / "results.json").write_text(json.dumps(results))
-results = pathlab_results.load(scratch / "results.json")  # the grader's shape
+results = results_format.load(scratch / "results.json")  # the grader's shape
 manifests = {n: [(t["name"].split(": ", 1)[1], t["max_score"], t.get("visibility", "visible"))
-                 for t in tests if pathlab_results.task_of(t) == n] for n in (1, 2)}
+                 for t in tests if results_format.task_of(t) == n] for n in (1, 2)}
 total, possible = 10, 21  # the hidden tests' 6 points included
 
 
@@ -104,18 +103,18 @@ def section(name, body):
 # ---------------------------------------------------------------- Autolab
 
 def autolab():
-    per_test = pathlab_results.autolab_problems(manifests, "test")
+    per_test = results_format.autolab_problems(manifests, "test")
     leaks("autolab problems per test", json.dumps(per_test))
     want = [("Task 1: shown passes", 3), ("Task 1: shown fails", 2), ("Task 1: hidden tests", 9),
             ("Task 2: shown two", 1), ("Task 2: hidden tests", 6)]
     check(per_test == want, f"autolab problems per test: {per_test}, not {want}")
-    per_task = pathlab_results.autolab_problems(manifests, "task")
+    per_task = results_format.autolab_problems(manifests, "task")
     check(per_task == [("Task 1", 14), ("Task 2", 7)], f"autolab problems per task: {per_task}")
     for per, problems, scores in (
             ("test", per_test, {"Task 1: shown passes": 3, "Task 1: shown fails": 0, "Task 1: hidden tests": 6,
                                 "Task 2: shown two": 1, "Task 2: hidden tests": 0}),
             ("task", per_task, {"Task 1": 9, "Task 2": 1})):
-        result = pathlab_results.autolab(results, problems, per, ["total"])
+        result = results_format.autolab(results, problems, per, ["total"])
         leaks(f"autolab autoresult per {per}", json.dumps(result))
         check(result == {"scores": scores, "scoreboard": [total]},
               f"autolab autoresult per {per}: {result}, not {scores} and total {total}")
@@ -137,7 +136,7 @@ def autolab():
             settings = json.load(tar.extractfile("pathlab-autolab.json"))
         leaks(f"make-autograder --per {per}: autograde.tar", json.dumps(settings))
         problems = [tuple(p) for p in settings["problems"]]  # as grade-job reads them
-        check(problems == grade_job.pathlab_results.autolab_problems(manifests, per),
+        check(problems == grade_job.results_format.autolab_problems(manifests, per),
               f"make-autograder --per {per}: its problems are not what grade-job checks them against")
 
     text = grade_job.feedback(results, {"tasks": [1, 2]}, [])
@@ -151,7 +150,7 @@ def autolab():
 # ---------------------------------------------------------------- PrairieLearn
 
 def prairielearn():
-    report = pathlab_results.prairielearn(results, scratch)
+    report = results_format.prairielearn(results, scratch)
     text = json.dumps(report)
     leaks("prairielearn results", text)
     check(shown_png in text, "prairielearn results: a visible test's picture is not inlined")
@@ -167,7 +166,7 @@ def prairielearn():
 # ---------------------------------------------------------------- GitHub Classroom
 
 def classroom():
-    report = pathlab_results.classroom(results, [1, 2])
+    report = results_format.classroom(results, [1, 2])
     leaks("classroom report", json.dumps(report))
     check([t["max_score"] for t in report["tasks"]] == [14, 7], "classroom: max_score not the tasks' 14 and 7")
     check(report["score"] == total, f"classroom: {report['score']} points reported, the grader's {total}")
@@ -190,7 +189,7 @@ def classroom():
 
 def student_check():
     """tools/check's report and its Markdown summary (what Classroom's job log and run summary show)."""
-    check_tool = load_script(root / "tools/check")
+    from grader.driver import check as check_tool
     printed = io.StringIO()
     with contextlib.redirect_stdout(printed):
         check_tool.report(results, "reference", show_all=True)

@@ -2,7 +2,7 @@
 // each kind the grader must read back, with known points, visibility and
 // outcome, linked with pathlab_judge like every suite's judge. What it prints
 // and writes is made from grader/suite/verdicts.json; the driver reads it
-// with tools/pathlab_verdicts.py, from the same file.
+// with grader/driver/verdicts.py, from the same file.
 #include "suite/doctest_strings.h"
 #include "suite/grading.h"
 

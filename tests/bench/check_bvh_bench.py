@@ -35,8 +35,8 @@ import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
+sys.path.insert(0, str(ROOT))  # the repository: the import root (docs/architecture.md)
+from tools import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.normpath(os.path.join(HERE, "..", ".."))

@@ -8,6 +8,11 @@ line says "not in the student release", and the folders in it, may be
 missing where solutions/ is not; one that says "only in the student
 release" may be missing where solutions/ is.
 
+The Python code's imports: the repository is the import root, set only by
+a file Python starts, in one line marked "# the repository: the import
+root"; no module another file imports edits sys.path, and no file imports
+a module of tools/ or grader/ by its bare name (the old sys.path habit).
+
 "A camera ray, from main() to the pixel": every row's file exists and
 defines the function the row names (Class::name: a definition written
 Class::name(...) { ... }, or name(...) { ... } inside the class in a
@@ -134,15 +139,62 @@ def check_walk(root: Path, text: str, problems: list):
     return len(rows)
 
 
+IMPORT_ROOT_LINE = re.compile(r"^\s*sys\.path\.insert\(0, str\([^\n]*\)\)  # the repository: the import root\b")
+PACKAGE_IMPORT = re.compile(r"^\s*from ((?:tools|grader|tests)(?:\.\w+)*) import ([\w, ]+)", re.M)
+PATH_EDIT = re.compile(r"sys\.path\.(?:insert|append|extend)\(|sys\.path\s*(?:\+)?=|sys\.path\[")
+BARE_IMPORT = re.compile(r"^\s*(?:import|from) (pathlab_\w+|writeup_page|cycles_bridge)\b", re.M)
+
+
+def python_files(root: Path) -> list:
+    """Every tracked Python file: *.py, and the commands whose first line starts python3."""
+    listed = subprocess.run(["git", "-C", str(root), "ls-files"], capture_output=True, text=True).stdout.split()
+    files = []
+    for name in listed:
+        path = root / name
+        if not path.is_file() or name.startswith("tools/task-template/"):
+            continue
+        if name.endswith(".py"):
+            files.append(path)
+        elif "." not in path.name:
+            with path.open("rb") as f:
+                first = f.readline()
+            if first.startswith(b"#!") and b"python" in first:
+                files.append(path)
+    return files
+
+
+def check_imports(root: Path, problems: list) -> int:
+    files = python_files(root)
+    imported = set()
+    for path in files:
+        for package, names in PACKAGE_IMPORT.findall(path.read_text()):
+            base = root / package.replace(".", "/")
+            for name in (n.split()[0] for n in names.split(",") if n.strip()):
+                imported.update(p for p in (base.with_suffix(".py"), base / f"{name}.py") if p.is_file())
+    for path in files:
+        text, rel = path.read_text(), path.relative_to(root)
+        edits = [line for line in text.splitlines() if PATH_EDIT.search(line)]
+        marked = [line for line in edits if IMPORT_ROOT_LINE.match(line)]
+        if len(edits) != len(marked) or len(marked) > 1:
+            problems.append(f"Imports: {rel} edits sys.path other than by one marked import-root line")
+        if marked and path in imported:
+            problems.append(f"Imports: {rel} is a module others import, yet it edits sys.path")
+        for bare in BARE_IMPORT.findall(text):
+            problems.append(f"Imports: {rel} imports {bare} by its bare name (from tools import {bare})")
+    return len(files)
+
+
 def main() -> int:
     root = Path(sys.argv[1]).resolve()
     text = (root / "docs" / "architecture.md").read_text()
     problems = []
     check_tree(root, text, problems)
     rows = check_walk(root, text, problems)
+    scripts = check_imports(root, problems)
     for p in problems:
         print(p)
-    print(f"docs/architecture.md: the tree and {rows} hops of the camera ray's walk: {len(problems)} problems")
+    print(f"docs/architecture.md: the tree, {rows} hops of the camera ray's walk and the imports of {scripts} Python "
+          f"files: {len(problems)} problems")
     return 1 if problems else 0
 
 

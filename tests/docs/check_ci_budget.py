@@ -25,8 +25,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
-import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # the repository: the import root (docs/architecture.md)
+from tools import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
 
 CEILING = 60 * 60
 

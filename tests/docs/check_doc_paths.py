@@ -31,8 +31,8 @@ import re
 import sys
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "tools"))
-import pathlab_tasks  # noqa: E402
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # the repository: the import root (docs/architecture.md)
+from tools import pathlab_tasks
 
 RELEASE_ONLY = {pathlab_tasks.HANDED_OUT_FILE}  # written by tools/make-student-release
 TOP = ("framework", "apps", "tasks", "solutions", "tests", "tools", "media", "docs", "cmake", ".ci")

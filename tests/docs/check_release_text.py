@@ -140,8 +140,8 @@ def check_subset(repo: Path, subset: str, scratch: Path) -> list:
 
 def check_submitting_page(repo: Path) -> list:
     """docs/submitting.md's rule for a task's file holds for every task, and its example is a real task's."""
-    sys.path.insert(0, str(repo / "tools"))
-    import pathlab_tasks
+    sys.path.insert(0, str(repo))  # the repository: the import root (docs/architecture.md)
+    from tools import pathlab_tasks
     page = (repo / "docs" / "submitting.md").read_text()
     problems = []
     if "`tasks/NN-name/name.cpp`" not in page:

@@ -15,8 +15,8 @@ from pathlib import Path
 
 def main() -> int:
     root = Path(sys.argv[1])
-    sys.path.insert(0, str(root / "tools"))
-    import pathlab_tasks
+    sys.path.insert(0, str(root))  # the repository: the import root (docs/architecture.md)
+    from tools import pathlab_tasks
     handed_out = 11 in pathlab_tasks.handed_out(root)
     header = (root / "framework/tasks/adaptive_sampling.h").read_text()
     struct = re.search(r"struct AdaptiveSettings \{(.*?)\};", header, re.S).group(1)

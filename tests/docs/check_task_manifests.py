@@ -17,8 +17,8 @@ from pathlib import Path
 
 def main() -> int:
     root, pathlab = Path(sys.argv[1]), sys.argv[2]
-    sys.path.insert(0, str(root / "tools"))
-    import pathlab_tasks
+    sys.path.insert(0, str(root))  # the repository: the import root (docs/architecture.md)
+    from tools import pathlab_tasks
     listing = subprocess.run([pathlab, "debug", "--list"], capture_output=True, text=True, check=True).stdout
     views = set(re.findall(r"^--task (\d+) --view (\S+)", listing, re.M))
     problems, labels = [], {}

@@ -113,7 +113,7 @@ grep -q "click 140 200 -> pixel 140,200: 16 samples" "$out/session.log" || fail 
 # The panel buttons: one per task and the lab's, none cut by the window's
 # edge, each labelled with its number and task.json's label.
 panels=$(grep "^script: panels -> " "$out/session.log")
-count=$(python3 -c 'import sys; sys.path.insert(0, sys.argv[1]); import pathlab_tasks; print(len(pathlab_tasks.tasks()))'           "$root/tools")
+count=$task_count
 [[ $panels == *" -> $((count + 1)) buttons in "*" rows, 0 cut: "* ]] ||
   fail "the panel buttons are not one per task and the lab, all whole: $panels"
 for ((n = 1; n <= count; ++n)); do

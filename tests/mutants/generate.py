@@ -26,8 +26,8 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
+sys.path.insert(0, str(ROOT))  # the repository: the import root (docs/architecture.md)
+from tools import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
 
 KINDS = ("mutants", "alternates")
 

@@ -48,8 +48,8 @@ from pathlib import Path
 
 root, work_dir = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
 keep = "--keep" in sys.argv[3:]
-sys.path.insert(0, str(root / "tests/support"))
-from scratch import copy_worktree, expectation, finish, step_runner  # noqa: E402
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # the repository: the import root (docs/architecture.md)
+from tests.support.scratch import copy_worktree, expectation, finish, step_runner  # noqa: E402
 work = work_dir / "new-task"
 copy = work / "repo"
 build = copy / "build"

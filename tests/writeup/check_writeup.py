@@ -40,8 +40,8 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "tools"))
-import pathlab_tasks  # noqa: E402
+sys.path.insert(0, str(ROOT))  # the repository: the import root (docs/architecture.md)
+from tools import pathlab_tasks
 PYTHON = "/usr/bin/python3" if Path("/usr/bin/python3").exists() else sys.executable
 
 

@@ -1,4 +1,4 @@
-"""A submission as the grader takes it in (tools/pathlab_grading.py): a zip
+"""A submission as the grader takes it in (grading.py): a zip
 unpacked within bounds, and each task's file found by its name."""
 import stat
 import os
@@ -6,7 +6,7 @@ import zipfile
 import zlib
 from pathlib import Path
 
-import pathlab_tasks
+from tools import pathlab_tasks
 
 TASKS = pathlab_tasks.tasks()  # {n: (folder, file)}: the tasks/NN-name folders
 MAX_ZIP_BYTES = 64 << 20     # what a submission zip may unpack to

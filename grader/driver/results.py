@@ -13,7 +13,7 @@ import json
 import re
 from pathlib import Path
 
-RESULTS_BYTES = 16 << 20  # the largest results.json read back: tools/grade clips every output (pathlab_grading)
+RESULTS_BYTES = 16 << 20  # the largest results.json read back: tools/grade clips every output (grading.py)
 
 
 def load(path: Path) -> dict:

@@ -1,13 +1,13 @@
-"""The include rule of a graded task file (tools/pathlab_grading.py): it
+"""The include rule of a graded task file (grading.py): it
 may read the framework's headers and the compiler's own, nothing else. What
 the compiler searches, and every file the preprocessor opened."""
 import os
 import re
 from pathlib import Path
 
-from pathlab_run import clip, run
+from .processes import clip, run
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 # The framework's layer folders (framework/util, framework/core, ...): a task
 # file includes their headers as "core/scene.h", and system headers.

@@ -10,7 +10,7 @@ import json
 import re
 from pathlib import Path
 
-SPEC = json.loads((Path(__file__).resolve().parent.parent / "grader" / "suite" / "verdicts.json").read_text())
+SPEC = json.loads((Path(__file__).resolve().parents[1] / "suite" / "verdicts.json").read_text())
 CANDIDATE = SPEC["environment"]["candidate"]  # the candidate program (or its launcher) the judge starts
 VERDICT_FILE = SPEC["environment"]["verdict_file"]  # the file the judge writes its verdicts to
 IMAGE_FAILURES_DIR = SPEC["environment"]["image_failures_dir"]  # where a failed image test writes its pictures

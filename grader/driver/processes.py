@@ -1,4 +1,4 @@
-"""Running a command for the grader (tools/pathlab_sandbox.py, tools/check):
+"""Running a command for the grader (sandbox.py, tools/check):
 its output kept within bounds from both ends, its time and memory limited,
 and the processes it leaves behind reaped."""
 import os
@@ -11,7 +11,10 @@ import time
 from pathlib import Path
 
 
-def clip(text: str, limit: int) -> str:
+OUTPUT_LIMIT = 6000  # characters of a command's output the grader keeps (a test's, in results.json)
+
+
+def clip(text: str, limit: int = OUTPUT_LIMIT) -> str:
     """At most `limit` characters of `text`: its two ends, and a note where the middle was."""
     return text if len(text) <= limit else text[: limit // 2] + "\n[... output cut ...]\n" + text[-limit // 2 :]
 

@@ -11,7 +11,7 @@ import threading
 import time
 from pathlib import Path
 
-from pathlab_run import reap_orphans, run
+from .processes import reap_orphans, run
 
 SANDBOX_UID = int(os.environ.get("PATHLAB_SANDBOX_UID", "64990"))  # a uid nothing else uses
 CANDIDATE_LIMITS = ["--nofile=256", "--fsize=67108864", "--core=0"]
