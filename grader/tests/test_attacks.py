@@ -45,7 +45,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # the repository: the import root (docs/architecture.md)
 from tools import pathlab_tasks
-from tools.pathlab_adversary import compile_argv, lto_sections  # noqa: E402
+from tools.validity.adversary_lab import compile_argv, lto_sections  # noqa: E402
 from tools.pathlab_tasks import commit_random  # noqa: E402
 
 root, build, grade_build = (Path(a).resolve() for a in sys.argv[1:4])

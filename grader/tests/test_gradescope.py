@@ -41,7 +41,7 @@ REAL = Path("/autograder")
 SETUP_TIMEOUT, GRADE_TIMEOUT = 1200, 900
 sys.path.insert(0, str(root))  # the repository: the import root (docs/architecture.md)
 from tools import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
-from tools.pathlab_platforms import unpack  # noqa: E402  (like unzip, as Gradescope unpacks the zip)
+from tools.release.platforms import unpack  # noqa: E402  (like unzip, as Gradescope unpacks the zip)
 from tests.support.scratch import finish  # noqa: E402
 ALL_TASKS = sorted(pathlab_tasks.tasks(root))
 VISIBILITIES = {"hidden", "after_due_date", "after_published", "visible"}

@@ -28,7 +28,7 @@ sandbox = sys.argv[sys.argv.index("--sandbox") + 1] if "--sandbox" in sys.argv e
 sys.dont_write_bytecode = True
 sys.path.insert(0, str(root))  # the repository: the import root (docs/architecture.md)
 from tools import pathlab_tasks
-from tools.pathlab_adversary import compile_argv, lto_sections  # noqa: E402
+from tools.validity.adversary_lab import compile_argv, lto_sections  # noqa: E402
 
 PAGE = root / "docs" / "threat-model.md"
 HEADING = "## Programs the grading path runs outside the sandbox"

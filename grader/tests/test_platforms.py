@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Autolab and PrairieLearn grade PathLab as each runs it, here, with the
 same points as tools/grade (docs/ta-autolab.md, docs/ta-prairielearn.md).
-Each job is run by tools/pathlab_platforms.py, as tools/try-platform runs a
+Each job is run by tools/release/platforms.py, as tools/try-platform runs a
 TA's handin; this test checks what the jobs give.
 
 No Docker engine runs here, so the images are made as their Dockerfiles make
@@ -61,7 +61,7 @@ keep = "--keep" in sys.argv[3:]
 work = Path(tempfile.mkdtemp(prefix="pathlab-platforms-"))
 work.chmod(0o755)
 sys.path.insert(0, str(root))  # the repository: the import root (docs/architecture.md)
-from tools import pathlab_platforms as platforms  # noqa: E402  (each platform's run, as tools/try-platform runs it)
+from tools.release import platforms as platforms  # noqa: E402  (each platform's run, as tools/try-platform runs it)
 from grader.driver import results as results_format
 from tools import pathlab_tasks
 from grader.driver.grading import judge_manifest

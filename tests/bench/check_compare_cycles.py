@@ -60,9 +60,9 @@ def main() -> int:
             if done.returncode == 0 or reason not in done.stderr:
                 failures.append(f"{scene} is not refused for its {reason} (exit {done.returncode}: {done.stderr.strip()})")
         try:
-            py_compile.compile(str(ROOT / "tools" / "cycles_bridge.py"), cfile=str(Path(scratch) / "b.pyc"), doraise=True)
+            py_compile.compile(str(ROOT / "tools" / "perf" / "cycles_bridge.py"), cfile=str(Path(scratch) / "b.pyc"), doraise=True)
         except py_compile.PyCompileError as error:
-            failures.append(f"tools/cycles_bridge.py does not compile: {error}")
+            failures.append(f"tools/perf/cycles_bridge.py does not compile: {error}")
         if shutil.which("blender") is None:
             print("skipped: the end-to-end comparison (no blender on PATH; Debian: apt-get install blender)")
         else:

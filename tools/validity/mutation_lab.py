@@ -15,10 +15,10 @@ from pathlib import Path
 
 from tools import pathlab_tasks
 from grader.driver import verdicts as verdict_format
-from tools.pathlab_mutants import Mutant
+from tools.validity.mutants import Mutant
 from grader.driver.processes import link_command
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 REVIEWED = ROOT / "tests" / "mutants" / "survivors.txt"
 SUBMISSION_FLAGS = pathlab_tasks.SUBMISSION_FLAGS  # compiled as tools/grade compiles a submission
 

@@ -1,4 +1,4 @@
-"""Runs inside Blender (blender -b --factory-startup --python tools/cycles_bridge.py -- MODE ...);
+"""Runs inside Blender (blender -b --factory-startup --python tools/perf/cycles_bridge.py -- MODE ...);
 tools/compare-cycles drives it. Two modes:
 
   render SCENE.json OUT.exr SPP SEED MAX_BOUNCES

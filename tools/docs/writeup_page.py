@@ -87,7 +87,7 @@ NO_IMAGE_TESTS = "the suite has no image tests"  # a task's note when there is n
 
 def title_of(folder: str) -> str:
     """The handout's title: "# Task 3 — Bounding volume hierarchy" gives "Bounding volume hierarchy"."""
-    handout = Path(__file__).resolve().parent.parent / "tasks" / folder / "README.md"
+    handout = Path(__file__).resolve().parents[2] / "tasks" / folder / "README.md"
     if handout.exists():
         first = handout.read_text(encoding="utf-8").split("\n", 1)[0]
         m = re.match(r"#\s*Task\s+\d+\s*[—:-]\s*(.+)", first)

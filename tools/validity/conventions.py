@@ -2,8 +2,8 @@
 keep it correct, which every suite must give full marks."""
 import re
 
-from tools.pathlab_cpp_tokens import code_tokens, function_bodies, lex, match_brackets, ordinal, statement_end, template_brackets
-from tools.pathlab_mutants import Mutant
+from tools.validity.cpp_tokens import code_tokens, function_bodies, lex, match_brackets, ordinal, statement_end, template_brackets
+from tools.validity.mutants import Mutant
 
 
 # ---------------------------------------------------------------------------

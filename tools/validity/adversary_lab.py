@@ -20,7 +20,7 @@ from tools import pathlab_tasks
 from grader.driver import verdicts as verdict_format
 from grader.driver.processes import link_command
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def compile_argv(build: Path, task: int):
@@ -81,9 +81,9 @@ def toolchain_sections_source(task: int, build: Path, scratch: Path) -> str:
 # ---------------------------------------------------------------------------
 # Hostile answers made from the wire schema (tools/adversary): the stub's
 # answers, rewritten by a proxy between the judge and the stub's server
-# (tools/pathlab_adversary_proxy.inc), one strategy per candidate.
+# (tools/validity/adversary_proxy.inc), one strategy per candidate.
 
-PROXY = Path(__file__).resolve().parent / "pathlab_adversary_proxy.inc"
+PROXY = Path(__file__).resolve().parent / "adversary_proxy.inc"
 COMPACT = {"f32": "f", "f64": "d", "i8": "b", "u8": "B", "i16": "h", "u16": "H", "i32": "i", "u32": "I",
            "i64": "l", "u64": "L", "bool": "?"}
 FLOAT_VALUES = ["nan", "inf", "-inf", "zero", "negzero", "big", "negbig", "tiny", "one", "negone"]

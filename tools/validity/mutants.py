@@ -5,7 +5,7 @@ import hashlib
 import re
 from dataclasses import dataclass, field
 
-from tools.pathlab_cpp_tokens import (CONTROL, VALUE_TOKENS, code_tokens, declared_functions, function_bodies, lex,
+from tools.validity.cpp_tokens import (CONTROL, VALUE_TOKENS, code_tokens, declared_functions, function_bodies, lex,
                                 match_brackets, ordinal, plain_type, statement_end, template_brackets,
                                 argument_spans)
 

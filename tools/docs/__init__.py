@@ -1,0 +1,1 @@
+"""The documents made from the code: the write-up, the handout tables, their sections."""

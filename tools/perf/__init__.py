@@ -1,0 +1,1 @@
+"""Speed against error: paired speed runs, Blender Cycles as a second renderer, where a render's time goes."""
