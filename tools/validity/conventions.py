@@ -2,8 +2,8 @@
 keep it correct, which every suite must give full marks."""
 import re
 
-from tools.validity.cpp_tokens import code_tokens, function_bodies, lex, match_brackets, ordinal, statement_end, template_brackets
-from tools.validity.mutants import Mutant
+from tools.validity.cpp_tokens import Parsed, function_bodies, parse, statement_end
+from tools.validity.mutants import Variants
 
 
 # ---------------------------------------------------------------------------
@@ -99,114 +99,128 @@ NOT_WRITTEN = {"const", "constexpr", "static", "auto", "float", "double", "int",
 
 
 def generate_conventions(task: int, folder: str, source: str):
-    tokens = lex(source)
-    pairs = match_brackets(tokens)
-    angles = template_brackets(tokens)
-    code = code_tokens(tokens, pairs)
-    line_of = lambda offset: source.count("\n", 0, offset) + 1
-    lines = source.splitlines()
-    alternates = []
-
-    def add(operator, start, end, replacement, description, needs_review=False):
-        line = line_of(start)
-        m = Mutant(task, folder, operator, start, end, replacement, line, lines[line - 1].strip(), description)
-        m.needs_review = needs_review
-        alternates.append(m)
-
-    for name, params, body_open, body_close in function_bodies(tokens, pairs, code):
+    parsed = parse(source)
+    variants = Variants(task, folder, parsed)
+    for name, params, body_open, body_close in function_bodies(parsed.tokens, parsed.pairs, parsed.code):
         randoms = {p for t, p in params if RANDOM_NAME.fullmatch(p) and t.split()[-1] in ("float", "Vec2")}
-        at = tokens[body_open].end  # a statement inserted at the top of the body
-        for kind, u in ((t.split()[-1], p) for t, p in params if p in randoms):
-            if kind == "float":
-                add("mirror-u", at, at, f" {u} = {ALMOST_ONE} - {u};", f"{name}: `{u}` -> `1 - {u}`")
-            else:
-                for c in ("x", "y"):
-                    add("mirror-u", at, at, f" {u}.{c} = {ALMOST_ONE} - {u}.{c};", f"{name}: `{u}.{c}` -> `1 - {u}.{c}`")
-                add("swap-u", at, at, f" {u} = Vec2({u}.y, {u}.x);", f"{name}: `{u}.x` <-> `{u}.y`")
+        edits = [mirrors(parsed, name, params, randoms, body_open)]
         body = range(body_open + 1, body_close)
         for k in body:
-            t = tokens[k]
-            # A coin: a comparison with a random number on one side.
-            if t.kind == "op" and t.text in ("<", "<=", ">", ">=") and k not in angles:
-                for forward in (False, True):
-                    side = random_operand(tokens, k, forward, randoms)
-                    if side is None:
-                        continue
-                    a, b = side
-                    number = source[tokens[a].start:tokens[b].end]
-                    uses = sum(1 for j in body if tokens[j].text == tokens[a].text)
-                    reused = tokens[a].text in randoms and uses > 1
-                    add("coin", tokens[a].start, tokens[b].end, f"({ALMOST_ONE} - {number})",
-                        f"{name}: the coin `{number}` mirrored", needs_review=reused)
-            # A draw, where the code takes it.
-            if t.text in ("next1D", "next2D") and k >= 2 and tokens[k - 1].text == "." and \
-                    k + 2 < len(tokens) and tokens[k + 1].text == "(" and tokens[k + 2].text == ")":
-                start, end = tokens[k - 2].start, tokens[k + 2].end
-                draw = source[start:end]
-                if t.text == "next1D":
-                    if not any(tokens[j].text in ("<", "<=", ">", ">=") for j in (k - 3, k + 3) if 0 <= j < len(tokens)):
-                        add("draw", start, end, f"({ALMOST_ONE} - {draw})", f"{name}: `{draw}` mirrored")
-                else:
-                    add("draw", start, end, f"[](Vec2 v) {{ return Vec2(v.y, v.x); }}({draw})",
-                        f"{name}: the two numbers of `{draw}` exchanged")
-                    add("draw", start, end, f"[](Vec2 v) {{ return Vec2({ALMOST_ONE}) - v; }}({draw})",
-                        f"{name}: both numbers of `{draw}` mirrored")
-            # A clamp below 1 made a wrap: std::min(x, 1-) -> x < 1 ? x : x - 1.
-            if t.text == "min" and k >= 2 and tokens[k - 1].text == "::" and tokens[k - 2].text == "std" and \
-                    k + 1 < len(tokens) and tokens[k + 1].text == "(" and k + 1 in pairs:
-                close = pairs[k + 1]
-                commas = [j for j in range(k + 2, close) if tokens[j].text == "," and not any(
-                    o < j < pairs[o] for o in range(k + 2, j) if o in pairs)]
-                if len(commas) == 1 and source[tokens[commas[0] + 1].start:tokens[close - 1].end] == ALMOST_ONE:
-                    x = source[tokens[k + 2].start:tokens[commas[0] - 1].end]
-                    add("wrap", tokens[k - 2].start, tokens[close].end,
-                        f"[](float v) {{ return v < 1.0f ? v : v - 1.0f; }}({x})",
-                        f"{name}: `{x[:40]}` wrapped at 1, not clamped below it", needs_review=True)
-        # Neighbouring statements exchanged: simple statements (no control
-        # flow) in the same block, neither writing a name the other uses.
-        statements, k = [], body_open + 1
-        while k < body_close:
-            text = tokens[k].text
-            if text in ("{", "}", "else", "do", "case", "default", ":"):
-                statements.append(None)
-                k += 1
-                continue
-            if text in ("if", "for", "while", "switch"):  # its condition, then a block or one statement
-                statements.append(None)
-                k += 1
-                if k in pairs and tokens[k].text == "(":
-                    k = pairs[k] + 1
-                if k < body_close and tokens[k].text != "{":
-                    end = statement_end(tokens, k, pairs)
-                    k = body_close if end is None else end + 1
-                continue
-            end = statement_end(tokens, k, pairs)
-            if end is None or end >= body_close:
-                break
-            inner = {tokens[j].text for j in range(k, end)}
-            simple = text not in ("return", "break", "continue", "goto", "struct", "class", "enum", "using",
-                                  "static_assert", "throw") and end > k and "[" + "&" not in inner
-            lambda_or_type = "{" in inner and ("[" in inner or text in ("struct", "class"))
-            statements.append((k, end) if simple and not lambda_or_type else None)
-            k = end + 1
-        for first, second in zip(statements, statements[1:]):
-            if first is None or second is None:
-                continue
-            names_a = {tokens[j].text for j in range(first[0], first[1] + 1) if tokens[j].kind == "name"}
-            names_b = {tokens[j].text for j in range(second[0], second[1] + 1) if tokens[j].kind == "name"}
-            writes_a, writes_b = written_names(tokens, pairs, *first), written_names(tokens, pairs, *second)
-            if writes_a & names_b or writes_b & names_a:
-                continue
-            a = source[tokens[first[0]].start:tokens[first[1]].end]
-            b = source[tokens[second[0]].start:tokens[second[1]].end]
-            between = source[tokens[first[1]].end:tokens[second[0]].start]
-            add("reorder", tokens[first[0]].start, tokens[second[1]].end, b + between + a,
-                f"{name}: `{a[:40]}` and `{b[:40]}` exchanged")
+            edits += [coins(parsed, name, k, body, randoms), draws(parsed, name, k), wraps(parsed, name, k)]
+        edits.append(statement_swaps(parsed, name, body_open, body_close))
+        for edit in (e for step in edits for e in step):
+            variants.add(*edit)
+    return variants.edited(lambda m: f"{folder}: {m.description}")
 
-    seen = {}
-    for m in alternates:
-        m.source = source[:m.start] + m.replacement + source[m.end:]
-        base = f"{folder}: {m.description}"
-        seen[base] = seen.get(base, 0) + 1
-        m.key = base if seen[base] == 1 else f"{base}  [{ordinal(seen[base])}]"
-    return [m for m in alternates if m.source != source]
+
+def mirrors(parsed: Parsed, name: str, params, randoms: set, body_open: int):
+    """Each random parameter mirrored (u -> 1- - u) or, a Vec2, its numbers exchanged, on entry."""
+    at = parsed.tokens[body_open].end  # a statement inserted at the top of the body
+    for kind, u in ((t.split()[-1], p) for t, p in params if p in randoms):
+        if kind == "float":
+            yield "mirror-u", at, at, f" {u} = {ALMOST_ONE} - {u};", f"{name}: `{u}` -> `1 - {u}`"
+        else:
+            for c in ("x", "y"):
+                yield "mirror-u", at, at, f" {u}.{c} = {ALMOST_ONE} - {u}.{c};", f"{name}: `{u}.{c}` -> `1 - {u}.{c}`"
+            yield "swap-u", at, at, f" {u} = Vec2({u}.y, {u}.x);", f"{name}: `{u}.x` <-> `{u}.y`"
+
+
+def coins(parsed: Parsed, name: str, k: int, body: range, randoms: set):
+    """A coin: a comparison at token k with a random number on one side, decided by the number mirrored."""
+    tokens = parsed.tokens
+    if tokens[k].kind != "op" or tokens[k].text not in ("<", "<=", ">", ">=") or k in parsed.angles:
+        return
+    for forward in (False, True):
+        side = random_operand(tokens, k, forward, randoms)
+        if side is None:
+            continue
+        a, b = side
+        number = parsed.spelled(a, b)
+        uses = sum(1 for j in body if tokens[j].text == tokens[a].text)
+        reused = tokens[a].text in randoms and uses > 1
+        yield ("coin", tokens[a].start, tokens[b].end, f"({ALMOST_ONE} - {number})",
+               f"{name}: the coin `{number}` mirrored", reused)
+
+
+def draws(parsed: Parsed, name: str, k: int):
+    """A draw, sampler.next1D() or next2D() at token k, mirrored or its two numbers exchanged where the code
+    takes it."""
+    tokens, text = parsed.tokens, parsed.tokens[k].text
+    if text not in ("next1D", "next2D") or k < 2 or tokens[k - 1].text != "." or \
+            k + 2 >= len(tokens) or tokens[k + 1].text != "(" or tokens[k + 2].text != ")":
+        return
+    start, end = tokens[k - 2].start, tokens[k + 2].end
+    draw = parsed.source[start:end]
+    if text == "next1D":
+        if not any(tokens[j].text in ("<", "<=", ">", ">=") for j in (k - 3, k + 3) if 0 <= j < len(tokens)):
+            yield "draw", start, end, f"({ALMOST_ONE} - {draw})", f"{name}: `{draw}` mirrored"
+    else:
+        yield ("draw", start, end, f"[](Vec2 v) {{ return Vec2(v.y, v.x); }}({draw})",
+               f"{name}: the two numbers of `{draw}` exchanged")
+        yield ("draw", start, end, f"[](Vec2 v) {{ return Vec2({ALMOST_ONE}) - v; }}({draw})",
+               f"{name}: both numbers of `{draw}` mirrored")
+
+
+def wraps(parsed: Parsed, name: str, k: int):
+    """A clamp below 1 made a wrap: std::min(x, 1-) at token k -> x < 1 ? x : x - 1."""
+    tokens, pairs = parsed.tokens, parsed.pairs
+    if tokens[k].text != "min" or k < 2 or tokens[k - 1].text != "::" or tokens[k - 2].text != "std" or \
+            k + 1 >= len(tokens) or tokens[k + 1].text != "(" or k + 1 not in pairs:
+        return
+    close = pairs[k + 1]
+    commas = [j for j in range(k + 2, close) if tokens[j].text == "," and not any(
+        o < j < pairs[o] for o in range(k + 2, j) if o in pairs)]
+    if len(commas) == 1 and parsed.spelled(commas[0] + 1, close - 1) == ALMOST_ONE:
+        x = parsed.spelled(k + 2, commas[0] - 1)
+        yield ("wrap", tokens[k - 2].start, tokens[close].end, f"[](float v) {{ return v < 1.0f ? v : v - 1.0f; }}({x})",
+               f"{name}: `{x[:40]}` wrapped at 1, not clamped below it", True)
+
+
+def simple_statements(parsed: Parsed, body_open: int, body_close: int) -> list:
+    """The body's statements in order: (first, last token) of a simple one (no control flow, no lambda or
+    type), None for anything else (a brace, a label, an if and what it guards)."""
+    tokens, pairs = parsed.tokens, parsed.pairs
+    statements, k = [], body_open + 1
+    while k < body_close:
+        text = tokens[k].text
+        if text in ("{", "}", "else", "do", "case", "default", ":"):
+            statements.append(None)
+            k += 1
+            continue
+        if text in ("if", "for", "while", "switch"):  # its condition, then a block or one statement
+            statements.append(None)
+            k += 1
+            if k in pairs and tokens[k].text == "(":
+                k = pairs[k] + 1
+            if k < body_close and tokens[k].text != "{":
+                end = statement_end(tokens, k, pairs)
+                k = body_close if end is None else end + 1
+            continue
+        end = statement_end(tokens, k, pairs)
+        if end is None or end >= body_close:
+            break
+        inner = {tokens[j].text for j in range(k, end)}
+        simple = text not in ("return", "break", "continue", "goto", "struct", "class", "enum", "using",
+                              "static_assert", "throw") and end > k and "[" + "&" not in inner
+        lambda_or_type = "{" in inner and ("[" in inner or text in ("struct", "class"))
+        statements.append((k, end) if simple and not lambda_or_type else None)
+        k = end + 1
+    return statements
+
+
+def statement_swaps(parsed: Parsed, name: str, body_open: int, body_close: int):
+    """Neighbouring simple statements in the same block exchanged, neither writing a name the other uses."""
+    tokens, pairs, source = parsed.tokens, parsed.pairs, parsed.source
+    statements = simple_statements(parsed, body_open, body_close)
+    for first, second in zip(statements, statements[1:]):
+        if first is None or second is None:
+            continue
+        names_a = {tokens[j].text for j in range(first[0], first[1] + 1) if tokens[j].kind == "name"}
+        names_b = {tokens[j].text for j in range(second[0], second[1] + 1) if tokens[j].kind == "name"}
+        writes_a, writes_b = written_names(tokens, pairs, *first), written_names(tokens, pairs, *second)
+        if writes_a & names_b or writes_b & names_a:
+            continue
+        a, b = parsed.spelled(*first), parsed.spelled(*second)
+        between = source[tokens[first[1]].end:tokens[second[0]].start]
+        yield ("reorder", tokens[first[0]].start, tokens[second[1]].end, b + between + a,
+               f"{name}: `{a[:40]}` and `{b[:40]}` exchanged")

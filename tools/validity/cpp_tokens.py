@@ -43,6 +43,31 @@ def lex(source: str):
 VALUE_TOKENS = ("name", "number", "string")
 
 
+@dataclass
+class Parsed:
+    """A source as the generators read it: its tokens, their bracket pairs and
+    template angles, which tokens are code (not in a declaration's head), its lines."""
+    source: str
+    tokens: list
+    pairs: dict
+    angles: set
+    code: set
+    lines: list
+
+    def line_of(self, offset: int) -> int:
+        return self.source.count("\n", 0, offset) + 1
+
+    def spelled(self, first: int, last: int) -> str:
+        """Tokens first..last as written."""
+        return self.source[self.tokens[first].start:self.tokens[last].end]
+
+
+def parse(source: str) -> Parsed:
+    tokens = lex(source)
+    pairs = match_brackets(tokens)
+    return Parsed(source, tokens, pairs, template_brackets(tokens), code_tokens(tokens, pairs), source.splitlines())
+
+
 CONTROL = {"if", "while", "for", "switch", "return", "sizeof", "alignof", "decltype", "static_assert", "catch"}
 
 
@@ -140,6 +165,19 @@ def plain_type(parts):
     return " ".join(p for p in parts if p not in TYPE_WORDS)
 
 
+def parameter_spans(tokens, pairs, open_: int, close: int):
+    """(first token, one past the last) of each comma-separated part between the brackets open_ and close."""
+    begin, k = open_ + 1, open_ + 1
+    while k <= close:
+        if k < close and tokens[k].text in "([{<" and k in pairs:
+            k = pairs[k] + 1
+            continue
+        if k == close or tokens[k].text == ",":
+            yield begin, k
+            begin = k + 1
+        k += 1
+
+
 def declared_functions(source):
     """{name: (return type, (parameter types))} of the functions declared or defined at namespace level."""
     tokens = lex(source)
@@ -161,21 +199,15 @@ def declared_functions(source):
         returns = plain_type(x.text for x in tokens[j + 1:i - 1])
         if not returns or returns in ("return", "else", "new") or "=" in returns:
             continue
-        params, begin, k = [], i + 1, i + 1
-        while k <= close:
-            if k < close and tokens[k].text in "([{<" and k in pairs:
-                k = pairs[k] + 1
-                continue
-            if k == close or tokens[k].text == ",":
-                part = [x.text for x in tokens[begin:k]]
-                if "=" in part:
-                    part = part[:part.index("=")]
-                if len(part) >= 2 and tokens[k - 1].kind == "name":
-                    part = part[:-1]  # the parameter's name
-                if part:
-                    params.append(plain_type(part))
-                begin = k + 1
-            k += 1
+        params = []
+        for begin, k in parameter_spans(tokens, pairs, i, close):
+            part = [x.text for x in tokens[begin:k]]
+            if "=" in part:
+                part = part[:part.index("=")]
+            if len(part) >= 2 and tokens[k - 1].kind == "name":
+                part = part[:-1]  # the parameter's name
+            if part:
+                params.append(plain_type(part))
         found.setdefault(tokens[i - 1].text, (returns, tuple(params)))
     return found
 
@@ -191,15 +223,9 @@ def function_bodies(tokens, pairs, code):
             j += 1
         if j >= len(tokens) or tokens[j].text != "{" or j not in pairs:
             continue
-        params, begin, k = [], i + 1, i + 1
-        while k <= close:
-            if k < close and tokens[k].text in "([{<" and k in pairs:
-                k = pairs[k] + 1
-                continue
-            if k == close or tokens[k].text == ",":
-                part = tokens[begin:k]
-                if len(part) >= 2 and part[-1].kind == "name":
-                    params.append((" ".join(x.text for x in part[:-1]), part[-1].text))
-                begin = k + 1
-            k += 1
+        params = []
+        for begin, k in parameter_spans(tokens, pairs, i, close):
+            part = tokens[begin:k]
+            if len(part) >= 2 and part[-1].kind == "name":
+                params.append((" ".join(x.text for x in part[:-1]), part[-1].text))
         yield tokens[i - 1].text, params, j, pairs[j]

@@ -5,9 +5,8 @@ import hashlib
 import re
 from dataclasses import dataclass, field
 
-from tools.validity.cpp_tokens import (CONTROL, VALUE_TOKENS, code_tokens, declared_functions, function_bodies, lex,
-                                match_brackets, ordinal, plain_type, statement_end, template_brackets,
-                                argument_spans)
+from tools.validity.cpp_tokens import (CONTROL, VALUE_TOKENS, Parsed, argument_spans, declared_functions,
+                                       function_bodies, ordinal, parse, plain_type, statement_end)
 
 
 @dataclass
@@ -72,132 +71,162 @@ def constant_mutations(text: str):
     return list(dict.fromkeys(o for o in out if o != text))
 
 
+class Variants:
+    """The edits of one source, in the order found, as Mutants of task `task`."""
+
+    def __init__(self, task: int, folder: str, parsed: Parsed):
+        self.task, self.folder, self.parsed, self.found = task, folder, parsed, []
+
+    def add(self, operator, start, end, replacement, description, needs_review=False):
+        line = self.parsed.line_of(start)
+        self.found.append(Mutant(self.task, self.folder, operator, start, end, replacement, line,
+                                 self.parsed.lines[line - 1].strip(), description, needs_review=needs_review))
+
+    def edited(self, key_of) -> list:
+        """Each edit applied to the source and keyed by key_of(mutant) (a repeated key gets "[2nd]", ...);
+        edits that change nothing dropped."""
+        source, seen = self.parsed.source, {}
+        for m in self.found:
+            m.source = source[:m.start] + m.replacement + source[m.end:]
+            base = key_of(m)
+            seen[base] = seen.get(base, 0) + 1
+            m.key = base if seen[base] == 1 else f"{base}  [{ordinal(seen[base])}]"
+        return [m for m in self.found if m.source != source]
+
+
 def generate(task: int, folder: str, source: str, header: str = ""):
-    tokens = lex(source)
-    pairs = match_brackets(tokens)
-    angles = template_brackets(tokens)
-    code = code_tokens(tokens, pairs)
-    line_of = lambda offset: source.count("\n", 0, offset) + 1
-    lines = source.splitlines()
-    mutants = []
-
-    def add(operator, start, end, replacement, description):
-        line = line_of(start)
-        mutants.append(Mutant(task, folder, operator, start, end, replacement, line, lines[line - 1].strip(), description))
-
-    def value_before(i):
-        return i > 0 and (tokens[i - 1].kind in VALUE_TOKENS or tokens[i - 1].text in (")", "]")) and \
-            tokens[i - 1].text not in CONTROL and tokens[i - 1].text not in ("return", "case")
-
-    for i, t in enumerate(tokens):
-        text = t.text
-        # Relational, logical and arithmetic operators.
-        swaps = {"<": "<=", "<=": "<", ">": ">=", ">=": ">", "==": "!=", "!=": "==",
-                 "&&": "||", "||": "&&", "+=": "-=", "-=": "+=", "*=": "/=", "/=": "*=", "++": "--", "--": "++"}
-        if t.kind == "op" and text in swaps and i not in angles:
-            kind = "relational" if text in ("<", "<=", ">", ">=", "==", "!=") else \
-                "logical" if text in ("&&", "||") else "arithmetic"
-            add(kind, t.start, t.end, swaps[text], f"`{text}` -> `{swaps[text]}`")
-        elif t.kind == "op" and text in "+-*/" and len(text) == 1:
-            if value_before(i):
-                opposite = {"+": "-", "-": "+", "*": "/", "/": "*"}[text]
-                add("arithmetic", t.start, t.end, opposite, f"`{text}` -> `{opposite}`")
-            elif text == "-":
-                add("sign", t.start, t.end, "", "unary `-` removed")
-        # min <-> max, abs removed.
-        if t.kind == "name" and text in MINMAX and i + 1 < len(tokens) and tokens[i + 1].text in ("(", "<"):
-            add("minmax", t.start, t.end, MINMAX[text], f"`{text}` -> `{MINMAX[text]}`")
-        if t.kind == "name" and text in ("abs", "fabs", "fabsf") and i + 1 < len(tokens) and tokens[i + 1].text == "(":
-            first = i - 2 if i >= 2 and tokens[i - 1].text == "::" else i
-            add("abs", tokens[first].start, t.end, "", f"`{source[tokens[first].start:t.end]}` removed")
-        # Constants.
-        # (Not the operand of == or !=: an equality nudged to another exact
-        # value tests a different point of measure zero, never a mistake.)
-        equality = (i > 0 and tokens[i - 1].text in ("==", "!=")) or \
-            (i + 1 < len(tokens) and tokens[i + 1].text in ("==", "!="))
-        if t.kind == "number" and not equality:
-            for replacement in constant_mutations(text):
-                add("constant", t.start, t.end, replacement, f"`{text}` -> `{replacement}`")
-        # float <-> double.
-        if t.kind == "name" and text in FLOAT_TYPES:
-            add("precision", t.start, t.end, FLOAT_TYPES[text], f"`{text}` -> `{FLOAT_TYPES[text]}`")
-
-        if i not in code:
-            continue
-        # if / while conditions negated.
-        if text in ("if", "while") and i + 1 < len(tokens) and tokens[i + 1].text == "(" and i + 1 in pairs:
-            open_, close = i + 1, pairs[i + 1]
-            if close > open_ + 1 and not (text == "while" and tokens[open_ + 1].text == "true"):
-                inner = source[tokens[open_ + 1].start:tokens[close - 1].end]
-                add("negate", tokens[open_ + 1].start, tokens[close - 1].end, f"!({inner})", f"`{text}` condition negated")
-        # ?: conditions negated.
-        if text == "?":
-            j = i - 1
-            while j >= 0:
-                u = tokens[j].text
-                if u in ")]":
-                    j = pairs.get(j, j) - 1
-                    continue
-                if u in ("(", "[", "{", "=", ",", ";", "return", "?", ":", "&&", "||") or u.endswith("="):
-                    if u in ("==", "!=", "<=", ">="):
-                        j -= 1
-                        continue
-                    break
-                j -= 1
-            start = j + 1
-            if start < i:
-                inner = source[tokens[start].start:tokens[i - 1].end]
-                add("negate", tokens[start].start, tokens[i - 1].end, f"!({inner})", "`?:` condition negated")
-        # Statements deleted.
-        previous = tokens[i - 1].text if i else ""
-        opened_by = tokens[pairs[i - 1] - 1].text if previous == ")" and i - 1 in pairs and pairs[i - 1] > 0 else ""
-        starts = previous in (";", "{", "}", "else") or (previous == ")" and opened_by in ("if", "for", "while"))
-        if starts and i + 1 < len(tokens):
-            nxt = tokens[i + 1].text
-            deletable = (t.kind == "name" and text not in CONTROL and text not in ("const", "constexpr", "static", "auto",
-                                                                                    "else", "do", "case", "default", "break",
-                                                                                    "continue") and
-                         nxt in (".", "=", "(", "+=", "-=", "*=", "/=", "++", "--", "[", "->", ",")) or \
-                        text in ("++", "--", "break", "continue") or \
-                        (text == "return" and (previous == ")" or previous == "else"))
-            if text == "std" and nxt == "::":  # std::swap(a, b); and the like
-                deletable = True
-            if deletable:
-                end = statement_end(tokens, i, pairs)
-                if end is not None:
-                    add("delete", t.start, tokens[end].end, ";" if previous in (")", "else") else "",
-                        f"`{source[t.start:tokens[end].end][:60]}` deleted")
-        # Neighbouring arguments swapped.
-        if text in ("(", "{") and i in pairs and i > 0 and \
-                (tokens[i - 1].kind == "name" and tokens[i - 1].text not in CONTROL or tokens[i - 1].text == ">"):
-            args = argument_spans(tokens, pairs, i)
-            for k in range(len(args) - 1):
-                (a0, a1), (b0, b1) = args[k], args[k + 1]
-                first = source[tokens[a0].start:tokens[a1].end]
-                second = source[tokens[b0].start:tokens[b1].end]
-                if first != second:
-                    add("swap-args", tokens[a0].start, tokens[b1].end,
-                        second + source[tokens[a1].end:tokens[b0].start] + first,
-                        f"arguments {k + 1} and {k + 2} of `{tokens[i - 1].text}` swapped")
-
+    parsed = parse(source)
+    variants = Variants(task, folder, parsed)
+    for i in range(len(parsed.tokens)):
+        for edit in operator_edits(parsed, i):
+            variants.add(*edit)
+        if i in parsed.code:
+            for step in (negations, deletion, argument_swaps):
+                for edit in step(parsed, i):
+                    variants.add(*edit)
     visible = {**declared_functions(header), **declared_functions(source)}
-    for operator, start, end, replacement, description in higher_order(tokens, pairs, code, source, visible):
-        add(operator, start, end, replacement, description)
+    for edit in higher_order(parsed.tokens, parsed.pairs, parsed.code, source, visible):
+        variants.add(*edit)
+    return variants.edited(lambda m: line_key(m, folder, parsed.lines))
 
-    # Stable, readable keys: the task and the edited line as the mutant has
-    # it (and which copy of the line, if the reference has it twice).
-    seen = {}
-    for m in mutants:
-        m.source = source[:m.start] + m.replacement + source[m.end:]
-        same_line = [n for n, text in enumerate(lines, 1) if text.strip() == m.site]
-        line_occurrence = same_line.index(m.line) + 1 if m.line in same_line else 1
-        now = m.source.splitlines()[m.line - 1].strip()
-        base = f"{folder}: {now}" if now else f"{folder}: deleted: {m.site}"
-        if line_occurrence > 1:
-            base += f"  [line copy {line_occurrence}]"
-        seen[base] = seen.get(base, 0) + 1
-        m.key = base if seen[base] == 1 else f"{base}  [{ordinal(seen[base])}]"
-    return [m for m in mutants if m.source != source]
+
+def line_key(m: Mutant, folder: str, lines: list) -> str:
+    """A stable, readable key: the task and the edited line as the mutant has
+    it (and which copy of the line, if the reference has it twice)."""
+    same_line = [n for n, text in enumerate(lines, 1) if text.strip() == m.site]
+    line_occurrence = same_line.index(m.line) + 1 if m.line in same_line else 1
+    now = m.source.splitlines()[m.line - 1].strip()
+    base = f"{folder}: {now}" if now else f"{folder}: deleted: {m.site}"
+    return base + (f"  [line copy {line_occurrence}]" if line_occurrence > 1 else "")
+
+
+SWAPS = {"<": "<=", "<=": "<", ">": ">=", ">=": ">", "==": "!=", "!=": "==",
+         "&&": "||", "||": "&&", "+=": "-=", "-=": "+=", "*=": "/=", "/=": "*=", "++": "--", "--": "++"}
+
+
+def operator_edits(parsed: Parsed, i: int):
+    """Token i's own edits, (operator, start, end, replacement, description): operators swapped, unary minus
+    removed, min <-> max, abs removed, constants nudged, float <-> double."""
+    tokens, source = parsed.tokens, parsed.source
+    t, text = tokens[i], tokens[i].text
+    if t.kind == "op" and text in SWAPS and i not in parsed.angles:
+        kind = "relational" if text in ("<", "<=", ">", ">=", "==", "!=") else \
+            "logical" if text in ("&&", "||") else "arithmetic"
+        yield kind, t.start, t.end, SWAPS[text], f"`{text}` -> `{SWAPS[text]}`"
+    elif t.kind == "op" and text in "+-*/" and len(text) == 1:
+        if value_before(tokens, i):
+            opposite = {"+": "-", "-": "+", "*": "/", "/": "*"}[text]
+            yield "arithmetic", t.start, t.end, opposite, f"`{text}` -> `{opposite}`"
+        elif text == "-":
+            yield "sign", t.start, t.end, "", "unary `-` removed"
+    if t.kind == "name" and text in MINMAX and i + 1 < len(tokens) and tokens[i + 1].text in ("(", "<"):
+        yield "minmax", t.start, t.end, MINMAX[text], f"`{text}` -> `{MINMAX[text]}`"
+    if t.kind == "name" and text in ("abs", "fabs", "fabsf") and i + 1 < len(tokens) and tokens[i + 1].text == "(":
+        first = i - 2 if i >= 2 and tokens[i - 1].text == "::" else i
+        yield "abs", tokens[first].start, t.end, "", f"`{source[tokens[first].start:t.end]}` removed"
+    # (Not the operand of == or !=: an equality nudged to another exact
+    # value tests a different point of measure zero, never a mistake.)
+    equality = (i > 0 and tokens[i - 1].text in ("==", "!=")) or \
+        (i + 1 < len(tokens) and tokens[i + 1].text in ("==", "!="))
+    if t.kind == "number" and not equality:
+        for replacement in constant_mutations(text):
+            yield "constant", t.start, t.end, replacement, f"`{text}` -> `{replacement}`"
+    if t.kind == "name" and text in FLOAT_TYPES:
+        yield "precision", t.start, t.end, FLOAT_TYPES[text], f"`{text}` -> `{FLOAT_TYPES[text]}`"
+
+
+def value_before(tokens, i: int) -> bool:
+    """A value ends just before token i (so a + or - there is binary)."""
+    return i > 0 and (tokens[i - 1].kind in VALUE_TOKENS or tokens[i - 1].text in (")", "]")) and \
+        tokens[i - 1].text not in CONTROL and tokens[i - 1].text not in ("return", "case")
+
+
+def negations(parsed: Parsed, i: int):
+    """The condition of an if, a while or a ?: at token i negated."""
+    tokens, pairs, text = parsed.tokens, parsed.pairs, parsed.tokens[i].text
+    if text in ("if", "while") and i + 1 < len(tokens) and tokens[i + 1].text == "(" and i + 1 in pairs:
+        open_, close = i + 1, pairs[i + 1]
+        if close > open_ + 1 and not (text == "while" and tokens[open_ + 1].text == "true"):
+            yield ("negate", tokens[open_ + 1].start, tokens[close - 1].end,
+                   f"!({parsed.spelled(open_ + 1, close - 1)})", f"`{text}` condition negated")
+    if text == "?":
+        j = i - 1
+        while j >= 0:
+            u = tokens[j].text
+            if u in ")]":
+                j = pairs.get(j, j) - 1
+                continue
+            if u in ("(", "[", "{", "=", ",", ";", "return", "?", ":", "&&", "||") or u.endswith("="):
+                if u in ("==", "!=", "<=", ">="):
+                    j -= 1
+                    continue
+                break
+            j -= 1
+        start = j + 1
+        if start < i:
+            yield ("negate", tokens[start].start, tokens[i - 1].end, f"!({parsed.spelled(start, i - 1)})",
+                   "`?:` condition negated")
+
+
+KEEP_STATEMENT = {"const", "constexpr", "static", "auto", "else", "do", "case", "default", "break", "continue"}
+
+
+def deletion(parsed: Parsed, i: int):
+    """The statement that starts at token i deleted (an assignment, a call, an increment, a break, a
+    return after a condition)."""
+    tokens, pairs, t, text = parsed.tokens, parsed.pairs, parsed.tokens[i], parsed.tokens[i].text
+    previous = tokens[i - 1].text if i else ""
+    opened_by = tokens[pairs[i - 1] - 1].text if previous == ")" and i - 1 in pairs and pairs[i - 1] > 0 else ""
+    starts = previous in (";", "{", "}", "else") or (previous == ")" and opened_by in ("if", "for", "while"))
+    if not starts or i + 1 >= len(tokens):
+        return
+    nxt = tokens[i + 1].text
+    deletable = (t.kind == "name" and text not in CONTROL and text not in KEEP_STATEMENT and
+                 nxt in (".", "=", "(", "+=", "-=", "*=", "/=", "++", "--", "[", "->", ",")) or \
+        text in ("++", "--", "break", "continue") or \
+        (text == "return" and (previous == ")" or previous == "else"))
+    if text == "std" and nxt == "::":  # std::swap(a, b); and the like
+        deletable = True
+    end = statement_end(tokens, i, pairs) if deletable else None
+    if end is not None:
+        yield ("delete", t.start, tokens[end].end, ";" if previous in (")", "else") else "",
+               f"`{parsed.source[t.start:tokens[end].end][:60]}` deleted")
+
+
+def argument_swaps(parsed: Parsed, i: int):
+    """Neighbouring arguments of the call (or braced initialiser) opened at token i exchanged."""
+    tokens, pairs, source = parsed.tokens, parsed.pairs, parsed.source
+    if tokens[i].text not in ("(", "{") or i not in pairs or i == 0 or not \
+            (tokens[i - 1].kind == "name" and tokens[i - 1].text not in CONTROL or tokens[i - 1].text == ">"):
+        return
+    args = argument_spans(tokens, pairs, i)
+    for k in range(len(args) - 1):
+        (a0, a1), (b0, b1) = args[k], args[k + 1]
+        first, second = parsed.spelled(a0, a1), parsed.spelled(b0, b1)
+        if first != second:
+            yield ("swap-args", tokens[a0].start, tokens[b1].end,
+                   second + source[tokens[a1].end:tokens[b0].start] + first,
+                   f"arguments {k + 1} and {k + 2} of `{tokens[i - 1].text}` swapped")
 
 
 # ---------------------------------------------------------------------------

@@ -68,7 +68,7 @@ NOT_CORRECT = ROOT / "tests" / "mutants" / "conventions.txt"  # convention alter
 
 # ---------------------------------------------------------------------------
 
-def main() -> int:
+def arguments():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--build-dir", default=str(ROOT / "build"))
     parser.add_argument("--tasks", default=",".join(str(n) for n in pathlab_tasks.tasks(ROOT)))
@@ -87,49 +87,20 @@ def main() -> int:
                         help="judge the convention alternates (every one, or K with --conventions) and no mutant")
     parser.add_argument("--try", dest="try_file", metavar="FILE",
                         help="judge one hand-made variant of the task file (one task in --tasks) and stop")
-    args = parser.parse_args()
+    return parser.parse_args()
+
+
+def main() -> int:
+    args = arguments()
     tasks = pathlab_tasks.tasks(ROOT)
     chosen = [int(n) for n in args.tasks.split(",")]
     if args.try_file:
-        if len(chosen) != 1:
-            raise SystemExit("tools/mutate --try needs exactly one task in --tasks")
-        lab = Lab(Path(args.build_dir).resolve(), args.timeout_factor)
-        lab.prepare(chosen)
-        variant = Mutant(chosen[0], tasks[chosen[0]][0], "by hand", 0, 0, "", 0, "", args.try_file,
-                         source=Path(args.try_file).read_text())
-        result = lab.judge(variant)
-        shutil.rmtree(lab.work, ignore_errors=True)
-        print(result.get("output", ""))
-        print(f"{result['verdict']} {result.get('test', '')} ({result['seconds']} s)".rstrip())
-        return 0
-    reviewed = read_reviewed()
-
-    mutants = {}
-    for n in chosen:
-        folder, file_name = tasks[n]
-        source = (ROOT / "solutions" / folder / file_name).read_text()
-        if args.conventions_only:
-            mutants[n] = generate_conventions(n, folder, source)
-        else:
-            header = ROOT / "framework" / "tasks" / Path(file_name).with_suffix(".h")
-            mutants[n] = generate(n, folder, source, header.read_text() if header.exists() else "")
+        return try_variant(args, tasks, chosen)
+    reviewed = read_reviewed()  # read first: a malformed list fails before hours of judging
+    mutants = {n: variants_of(n, tasks, args.conventions_only) for n in chosen}
     if args.list or args.show:
-        for n in chosen:
-            for m in mutants[n]:
-                if args.show and m.id != args.show:
-                    continue
-                print(f"{m.id}  {m.operator:10} line {m.line:3}: {m.description}\n      {m.site}\n  "
-                      f"{'alternate' if args.conventions_only else 'mutant'}: {m.key}")
-                if args.show:
-                    print("  ->  " + m.source.splitlines()[m.line - 1].strip())
-        print(f"{sum(len(v) for v in mutants.values())} {'alternates' if args.conventions_only else 'mutants'}",
-              file=sys.stderr)
-        return 0
-
-    if args.seed == "commit":
-        head = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "HEAD"], capture_output=True, text=True)
-        args.seed = int(head.stdout.strip()[:8], 16) if head.returncode == 0 else 1
-    args.seed = int(args.seed)
+        return list_variants(mutants, chosen, args)
+    args.seed = seed_of(args.seed)
     if args.sample:
         print(f"tools/mutate: {args.sample} mutants per task, seed {args.seed}", file=sys.stderr)
     lab = Lab(Path(args.build_dir).resolve(), args.timeout_factor)
@@ -138,8 +109,7 @@ def main() -> int:
     # a task's last slow judge never holds the run up alone.
     draws = {}
     if args.conventions or args.conventions_only:
-        alternates = {n: generate_conventions(n, tasks[n][0], (ROOT / "solutions" / tasks[n][0] / tasks[n][1]).read_text())
-                      for n in chosen}
+        alternates = {n: variants_of(n, tasks, conventions=True) for n in chosen}
         wanted = 0 if args.conventions_only and not args.conventions else args.conventions
         if wanted:
             print(f"tools/mutate: {wanted} convention alternates per task, seed {args.seed}", file=sys.stderr)
@@ -150,7 +120,6 @@ def main() -> int:
     started = time.time()
     judged = judge_all(lab, draws, args.jobs)
     elapsed = time.time() - started
-    results = {n: judged[("mutant", n)] for n in chosen if ("mutant", n) in judged}
     conventions_failed = False
     if args.conventions or args.conventions_only:
         conventions_failed = report_conventions({n: judged[("alternate", n)] for n in chosen}, tasks, elapsed,
@@ -158,8 +127,62 @@ def main() -> int:
     shutil.rmtree(lab.work, ignore_errors=True)
     if args.conventions_only:
         return 1 if conventions_failed else 0
+    results = {n: judged[("mutant", n)] for n in chosen if ("mutant", n) in judged}
+    unreviewed = report_mutants(results, reviewed, chosen, tasks, elapsed, args)
+    return 1 if unreviewed or conventions_failed else 0
 
-    # The table.
+
+def try_variant(args, tasks, chosen) -> int:
+    """--try FILE: one hand-made variant of the task file judged, its verdict printed."""
+    if len(chosen) != 1:
+        raise SystemExit("tools/mutate --try needs exactly one task in --tasks")
+    lab = Lab(Path(args.build_dir).resolve(), args.timeout_factor)
+    lab.prepare(chosen)
+    variant = Mutant(chosen[0], tasks[chosen[0]][0], "by hand", 0, 0, "", 0, "", args.try_file,
+                     source=Path(args.try_file).read_text())
+    result = lab.judge(variant)
+    shutil.rmtree(lab.work, ignore_errors=True)
+    print(result.get("output", ""))
+    print(f"{result['verdict']} {result.get('test', '')} ({result['seconds']} s)".rstrip())
+    return 0
+
+
+def variants_of(n: int, tasks, conventions: bool) -> list:
+    """Task n's mutants, or its convention alternates, generated from the reference."""
+    folder, file_name = tasks[n]
+    source = (ROOT / "solutions" / folder / file_name).read_text()
+    if conventions:
+        return generate_conventions(n, folder, source)
+    header = ROOT / "framework" / "tasks" / Path(file_name).with_suffix(".h")
+    return generate(n, folder, source, header.read_text() if header.exists() else "")
+
+
+def list_variants(mutants, chosen, args) -> int:
+    """--list, --show ID: the variants (or one, with its edited line), nothing judged."""
+    for n in chosen:
+        for m in mutants[n]:
+            if args.show and m.id != args.show:
+                continue
+            print(f"{m.id}  {m.operator:10} line {m.line:3}: {m.description}\n      {m.site}\n  "
+                  f"{'alternate' if args.conventions_only else 'mutant'}: {m.key}")
+            if args.show:
+                print("  ->  " + m.source.splitlines()[m.line - 1].strip())
+    print(f"{sum(len(v) for v in mutants.values())} {'alternates' if args.conventions_only else 'mutants'}",
+          file=sys.stderr)
+    return 0
+
+
+def seed_of(text: str) -> int:
+    """--seed: an integer, or "commit" (the checked-out commit's first 8 hex digits; 1 outside git)."""
+    if text == "commit":
+        head = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "HEAD"], capture_output=True, text=True)
+        return int(head.stdout.strip()[:8], 16) if head.returncode == 0 else 1
+    return int(text)
+
+
+def tally(results, chosen, reviewed):
+    """Per task, its mutants' counts by verdict (a reviewed survivor as its review says), and the unreviewed
+    survivors, the timeouts and the reviewed entries used."""
     rows, unreviewed, timeouts, used = [], [], [], set()
     for n in chosen:
         counts = dict(generated=len(results[n]), compile=0, killed=0, timeout=0, equivalent=0, correct=0, survived=0)
@@ -182,6 +205,13 @@ def main() -> int:
         judged = counts["killed"] + counts["timeout"] + counts["survived"]
         counts["score"] = 100.0 * (counts["killed"] + counts["timeout"]) / judged if judged else 100.0
         rows.append((n, counts))
+    return rows, unreviewed, timeouts, used
+
+
+def report_mutants(results, reviewed, chosen, tasks, elapsed, args) -> list:
+    """The table, the timeouts and the unreviewed survivors printed (and written, --report); returns the
+    unreviewed survivors."""
+    rows, unreviewed, timeouts, used = tally(results, chosen, reviewed)
     print(f"{'task':16} {'mutants':>7} {'no build':>8} {'killed':>6} {'timeout':>7} {'equiv.':>6} {'correct':>7} "
           f"{'survived':>8} {'killed %':>8}")
     for n, c in rows:
@@ -202,7 +232,7 @@ def main() -> int:
             print(f"note: no surviving mutant matches this entry of {REVIEWED.name} (killed, or the code changed): {k}")
     if args.report:
         write_report(rows, reviewed, used, elapsed, args.jobs, tasks)
-    return 1 if unreviewed or conventions_failed else 0
+    return unreviewed
 
 
 def drawn(candidates, sample, seed, task):
