@@ -17,14 +17,9 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]))  # the repository: the import root (docs/architecture.md)
 from tools import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
+from tools.cpp_tokens import blank_comments_and_literals as code_only  # noqa: E402
 
 SUITES = {folder: file.replace(".cpp", ".h") for folder, file in pathlab_tasks.tasks().values()}
-
-
-def code_only(text: str) -> str:
-    """The source with comments, string and character literals blanked out."""
-    pattern = re.compile(r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'', re.S)
-    return pattern.sub(lambda m: " " * len(m.group(0)), text)
 
 
 def task_functions(header: Path) -> set:

@@ -2,7 +2,7 @@
 keep it correct, which every suite must give full marks."""
 import re
 
-from tools.validity.cpp_tokens import Parsed, function_bodies, parse, statement_end
+from tools.cpp_tokens import Parsed, function_bodies, parse, statement_end
 from tools.validity.mutants import Variants
 
 

@@ -20,74 +20,25 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from tools import pathlab_tasks
+from tools.cpp_tokens import Token, lex, string_value
 
 ROOT = pathlab_tasks.ROOT
 CHECK_MACROS = re.compile(r"(CHECK|REQUIRE|FAIL_CHECK|FAIL)(_[A-Z]+)*$")
 KEYWORDS = {"if", "for", "while", "switch", "return", "catch", "sizeof", "decltype", "static_cast", "TEST_CASE"}
 
 
-@dataclass
-class Token:
-    kind: str  # "id", "str" (a string literal's value), "char", "punct"
-    text: str
-    line: int
-    start: int = 0  # where it is in the source, and just past it
-    end: int = 0
-
-
 def tokens(source: str):
-    """C++ tokens enough to match braces and read calls: comments dropped,
-    string literals (raw ones too) kept whole, adjacent literals joined."""
-    out, i, line, n = [], 0, 1, len(source)
-    while i < n:
-        c = source[i]
-        if c == "\n":
-            line += 1
-            i += 1
-        elif c.isspace():
-            i += 1
-        elif source.startswith("//", i):
-            i = source.find("\n", i)
-            i = n if i < 0 else i
-        elif source.startswith("/*", i):
-            end = source.find("*/", i + 2)
-            line += source.count("\n", i, end)
-            i = end + 2
-        elif c == "#" and (not out or out[-1].line < line):  # a preprocessor line
-            while i < n and source[i] != "\n":
-                i += 2 if source.startswith("\\\n", i) else 1
-        elif c == "R" and i + 1 < n and source[i + 1] == '"':
-            open_paren = source.index("(", i)
-            delimiter = ")" + source[i + 2:open_paren] + '"'
-            end = source.index(delimiter, open_paren)
-            out.append(Token("str", source[open_paren + 1:end], line, i, end + len(delimiter)))
-            line += source.count("\n", i, end)
-            i = end + len(delimiter)
-        elif c in "\"'":
-            j, value = i + 1, []
-            while source[j] != c:
-                if source[j] == "\\":
-                    value.append(source[j:j + 2])
-                    j += 2
-                else:
-                    value.append(source[j])
-                    j += 1
-            text = "".join(value).replace('\\"', '"').replace("\\\\", "\\")
-            if c == '"' and out and out[-1].kind == "str":
-                out[-1].text += text  # "a" "b" is "ab"
-                out[-1].end = j + 1
-            else:
-                out.append(Token("str" if c == '"' else "char", text, line, i, j + 1))
-            i = j + 1
-        elif c.isalnum() or c == "_":
-            j = i
-            while j < n and (source[j].isalnum() or source[j] == "_"):
-                j += 1
-            out.append(Token("id", source[i:j], line, i, j))
-            i = j
-        else:
-            out.append(Token("punct", c, line, i, i + 1))
-            i += 1
+    """The suite's tokens (cpp_tokens.lex), each string literal (adjacent ones joined: "a" "b" is "ab") one
+    token of kind "text" holding its characters."""
+    out = []
+    for t in lex(source):
+        if t.kind == "string" and not t.text.startswith("'"):
+            if out and out[-1].kind == "text":
+                out[-1].text += string_value(t.text)
+                out[-1].end = t.end
+                continue
+            t = Token("text", string_value(t.text), t.start, t.end, t.line)
+        out.append(t)
     return out
 
 
@@ -119,9 +70,9 @@ def matching(toks, i, open_char, close_char):
     """The index of the token closing the one at i."""
     depth = 0
     for j in range(i, len(toks)):
-        if toks[j].kind == "punct" and toks[j].text == open_char:
+        if toks[j].kind == "op" and toks[j].text == open_char:
             depth += 1
-        elif toks[j].kind == "punct" and toks[j].text == close_char:
+        elif toks[j].kind == "op" and toks[j].text == close_char:
             depth -= 1
             if depth == 0:
                 return j
@@ -141,16 +92,16 @@ def read_body(name, source, toks, open_brace):
     i = open_brace + 1
     while i < close:
         t = toks[i]
-        if t.kind == "punct" and t.text == "{":
+        if t.kind == "op" and t.text == "{":
             scopes.append([])
-        elif t.kind == "punct" and t.text == "}":
+        elif t.kind == "op" and t.text == "}":
             scopes.pop()
-        elif t.kind == "id" and i + 1 < close and toks[i + 1].text == "(":
+        elif t.kind == "name" and i + 1 < close and toks[i + 1].text == "(":
             in_force = next((h for scope in reversed(scopes) for h in reversed(scope)), None)
             end = matching(toks, i + 1, "(", ")")
             if t.text == "HINT":
                 literal = toks[i + 2]
-                if literal.kind != "str" or end != i + 3:
+                if literal.kind != "text" or end != i + 3:
                     raise SystemExit(f"hint-catalogue: {name}: HINT at line {t.line} takes one string literal")
                 scopes[-1].append(literal.text)
                 i = end
@@ -160,7 +111,7 @@ def read_body(name, source, toks, open_brace):
                 continue
             elif t.text == "hintForFailure":
                 body.computed = True
-            elif t.text not in KEYWORDS and (i == 0 or toks[i - 1].text not in (".", ">")):
+            elif t.text not in KEYWORDS and (i == 0 or toks[i - 1].text not in (".", "->", ">", ">>")):
                 body.calls.append((t.text, in_force))
         i += 1
     return body, close
@@ -174,7 +125,7 @@ def parse(path: Path):
     i = 0
     while i < len(toks):
         t = toks[i]
-        if t.kind == "id" and t.text == "TEST_CASE" and toks[i + 1].text == "(":
+        if t.kind == "name" and t.text == "TEST_CASE" and toks[i + 1].text == "(":
             end = matching(toks, i + 1, "(", ")")
             name = toks[i + 2].text
             grading = next(j for j in range(i, end) if toks[j].text == "grading")
@@ -183,7 +134,7 @@ def parse(path: Path):
             tests.append(TestCase(name, points, hint, t.line, body))
             i = close + 1
             continue
-        if t.kind == "punct" and t.text == "{" and i > 0 and toks[i - 1].text in (")", "const", "override"):
+        if t.kind == "op" and t.text == "{" and i > 0 and toks[i - 1].text in (")", "const", "override"):
             # A function's body at namespace scope (or a method's): its name precedes its parameters.
             j = i - 1
             while toks[j].text != ")":
@@ -197,7 +148,7 @@ def parse(path: Path):
                     if depth == 0:
                         break
                 k -= 1
-            name = toks[k - 1].text if toks[k - 1].kind == "id" else "(lambda)"
+            name = toks[k - 1].text if toks[k - 1].kind == "name" else "(lambda)"
             body, close = read_body(name, source, toks, i)
             if name not in KEYWORDS:
                 helpers.setdefault(name, []).append(body)

@@ -5,7 +5,7 @@ import hashlib
 import re
 from dataclasses import dataclass, field
 
-from tools.validity.cpp_tokens import (CONTROL, VALUE_TOKENS, Parsed, argument_spans, declared_functions,
+from tools.cpp_tokens import (CONTROL, VALUE_TOKENS, Parsed, argument_spans, declared_functions,
                                        function_bodies, ordinal, parse, plain_type, statement_end)
 
 

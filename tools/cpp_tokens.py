@@ -1,43 +1,68 @@
-"""C++ source as tools/mutate reads it: a lexer just good enough to find
-mutation sites (comments, strings and preprocessor lines are never
-mutated), brackets matched, statements and function bodies found."""
+"""C++ source as the tools read it, one lexer for all: tools/mutate (its
+mutation sites: comments, strings and preprocessor lines are never
+mutated; brackets matched, statements and function bodies found),
+tools/hint-catalogue (a suite's test cases, checks and hints) and the
+grader's check that suites call the candidate (the source with comments
+and literals blanked)."""
 import re
 from dataclasses import dataclass
 
 
 # ---------------------------------------------------------------------------
-# A C++ lexer just good enough to find mutation sites: comments, strings and
-# preprocessor lines are never mutated.
+# A C++ lexer good enough for these tools, not a compiler's: raw strings,
+# comments and preprocessor lines (indented ones too: a space token ends at
+# each line's end) are whole tokens; anything it does not know is an "other"
+# token of one character.
 
 TOKEN = re.compile(r"""
-    (?P<space>\s+)
+    (?P<preprocessor>^[ \t]*\#[^\n]*(?:\\\n[^\n]*)*)
+  | (?P<space>[ \t\r\f\v]*\n|[ \t\r\f\v]+)
   | (?P<comment>//[^\n]*|/\*.*?\*/)
-  | (?P<preprocessor>^[ \t]*\#[^\n]*(?:\\\n[^\n]*)*)
-  | (?P<string>"(?:\\.|[^"\\\n])*"|'(?:\\.|[^'\\\n])*')
+  | (?P<string>R"(?P<delimiter>[^()\\\s"]{0,16})\(.*?\)(?P=delimiter)"|"(?:\\.|[^"\\\n])*"|'(?:\\.|[^'\\\n])*')
   | (?P<number>0[xX][0-9a-fA-F.]+(?:[pP][+-]?\d+)?[fFlLuU]*|(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?[fFlLuU]*)
   | (?P<name>[A-Za-z_]\w*)
   | (?P<op><<=|>>=|->\*|\.\.\.|::|->|\+\+|--|<<|>>|<=|>=|==|!=|&&|\|\||\+=|-=|\*=|/=|%=|&=|\|=|\^=|[-+*/%<>=!&|^~?:;,.(){}\[\]])
+  | (?P<other>.)
 """, re.S | re.M | re.X)
 
 
 @dataclass
 class Token:
-    kind: str
+    kind: str   # name, number, string (a string or character literal as written), op, other
     text: str
-    start: int
+    start: int  # where it is in the source, and just past it
     end: int
+    line: int = 0
+
+
+def scan(source: str):
+    """Every match of TOKEN in order, spaces, comments and preprocessor lines included, with its line."""
+    position, line = 0, 1
+    while position < len(source):
+        match = TOKEN.match(source, position)
+        yield match, line
+        line += match.group().count("\n")
+        position = match.end()
 
 
 def lex(source: str):
-    tokens, position = [], 0
-    while position < len(source):
-        match = TOKEN.match(source, position)
-        if not match:
-            raise SystemExit(f"tools/mutate: cannot read the source at offset {position}: {source[position:position + 40]!r}")
-        if match.lastgroup not in ("space", "comment", "preprocessor"):
-            tokens.append(Token(match.lastgroup, match.group(), match.start(), match.end()))
-        position = match.end()
-    return tokens
+    """The tokens of the code: no spaces, comments or preprocessor lines."""
+    return [Token(match.lastgroup, match.group(), match.start(), match.end(), line) for match, line in scan(source)
+            if match.lastgroup not in ("space", "comment", "preprocessor")]
+
+
+def blank_comments_and_literals(source: str) -> str:
+    """The source with its comments and string and character literals turned into spaces (lines kept)."""
+    return "".join(re.sub(r"[^\n]", " ", m.group()) if m.lastgroup in ("comment", "string") else m.group()
+                   for m, _ in scan(source))
+
+
+def string_value(text: str) -> str:
+    """A string literal's characters: a raw string's as written; an escaped quote or backslash unescaped,
+    other escapes kept as written."""
+    if text.startswith("R"):
+        return text[text.index("(") + 1:text.rindex(")")]
+    return text[1:-1].replace('\\"', '"').replace("\\\\", "\\")
 
 
 VALUE_TOKENS = ("name", "number", "string")
