@@ -138,14 +138,20 @@ def become_subreaper() -> None:
         pass
 
 
-def reap_orphans() -> None:
+def reap_orphans(wait_seconds: float = 0) -> bool:
+    """Reaps the exited orphans re-parented to this process (a launcher's subshell whose launcher was
+    killed). With wait_seconds, waits up to that long for the running ones too, so that every one has
+    exited (and written what it writes); False if one was still running then."""
+    deadline = time.monotonic() + wait_seconds
     while True:
         try:
             pid, _ = os.waitpid(-1, os.WNOHANG)
         except ChildProcessError:
-            return
+            return True
         if pid == 0:
-            return
+            if time.monotonic() >= deadline:
+                return wait_seconds == 0
+            time.sleep(0.02)
 
 
 def link_command(build: Path, target: str):

@@ -19,8 +19,6 @@ No build: a few seconds.
 usage: test_visibility.py REPO_ROOT WORK_DIR"""
 import base64
 import contextlib
-import importlib.machinery
-import importlib.util
 import io
 import json
 import os
@@ -35,6 +33,7 @@ root, work = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
 sys.dont_write_bytecode = True  # no __pycache__ left in the tree's tools/
 sys.path.insert(0, str(root))  # the repository: the import root (docs/architecture.md)
 from grader.driver import results as results_format  # noqa: E402
+from grader.platforms.autolab import grade_job, make_autograder as maker  # noqa: E402
 from tests.support.fake_github import FakeGitHub  # noqa: E402
 
 MARK = "SECRET"
@@ -44,14 +43,6 @@ failures = []
 def check(ok, message):
     if not ok:
         failures.append(message)
-
-
-def load_script(path: Path):
-    """A tool without .py (tools/autolab/grade-job) as a module; its main() is not run."""
-    loader = importlib.machinery.SourceFileLoader(path.name.replace("-", "_"), str(path))
-    module = importlib.util.module_from_spec(importlib.util.spec_from_loader(loader.name, loader))
-    loader.exec_module(module)
-    return module
 
 
 def leaks(what, text):
@@ -120,8 +111,6 @@ def autolab():
               f"autolab autoresult per {per}: {result}, not {scores} and total {total}")
 
     # make-autograder's assessment, with these manifests for its judges; grade-job's check agrees with it.
-    maker = load_script(root / "tools/autolab/make-autograder")
-    grade_job = load_script(root / "tools/autolab/grade-job")
     maker.judges = lambda build, tasks: {n: manifests[n] for n in tasks}
     for per in ("test", "task"):
         out = scratch / f"autolab-{per}"

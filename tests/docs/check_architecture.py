@@ -12,8 +12,9 @@ The Python code's imports: the repository is the import root, set only by
 a file Python starts, in one line marked "# the repository: the import
 root"; no module another file imports edits sys.path, and no file imports
 a module of tools/ or grader/ by its bare name (the old sys.path habit).
-A Python command in tools/ holds no code of its own: it starts the main()
-of its module in one of tools/'s packages.
+A Python command in tools/ (a platform's in its folder there too) holds no
+code of its own: it starts the main() of its module in one of tools/'s
+packages, or in grader/ (the driver's, the platforms' adapters).
 
 "A camera ray, from main() to the pixel": every row's file exists and
 defines the function the row names (Class::name: a definition written
@@ -183,9 +184,10 @@ def check_imports(root: Path, problems: list) -> int:
             problems.append(f"Imports: {rel} is a module others import, yet it edits sys.path")
         for bare in BARE_IMPORT.findall(text):
             problems.append(f"Imports: {rel} imports {bare} by its bare name (from tools import {bare})")
-        if rel.parent == Path("tools") and path.suffix == "" and re.search(r"^(def|class) ", text, re.M):
-            problems.append(f"Imports: {rel} is a command with code of its own: move it into a module of tools/'s "
-                            f"packages and start its main() (as tools/check starts grader/driver/check.py)")
+        if rel.parts[0] == "tools" and path.suffix == "" and re.search(r"^(def|class) ", text, re.M):
+            problems.append(f"Imports: {rel} is a command with code of its own: move it into a module (of tools/'s "
+                            f"packages, or grader/platforms/ for a platform's) and start its main() (as tools/check "
+                            f"starts grader/driver/check.py)")
     return len(files)
 
 

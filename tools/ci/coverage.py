@@ -68,6 +68,7 @@ import sys
 import time
 from pathlib import Path
 
+from grader.driver.processes import reap_orphans  # noqa: E402
 from tools import pathlab_tasks  # noqa: E402  (the task list: the tasks/NN-name folders)
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -191,21 +192,6 @@ wait "$!"
     path.chmod(0o755)
 
 
-def reap_orphans() -> None:
-    """Waits for every orphaned descendant (a launcher's subshell whose launcher
-    the judge killed), so that every candidate has exited and written its counts."""
-    deadline = time.monotonic() + ORPHAN_TIMEOUT
-    while True:
-        try:
-            pid, _ = os.waitpid(-1, os.WNOHANG)
-        except ChildProcessError:
-            return
-        if pid == 0:
-            if time.monotonic() > deadline:
-                raise Failure(f"a candidate was still running {ORPHAN_TIMEOUT} s after its judge ended")
-            time.sleep(0.02)
-
-
 def run_suite(build_dir: Path, out: Path, name: str) -> str:
     """Runs suite NAME's judge against its candidate; returns the judge's SCORE line."""
     judge = build_dir / "tests" / f"test-{name}"
@@ -223,7 +209,10 @@ def run_suite(build_dir: Path, out: Path, name: str) -> str:
             raise Failure(f"suite {name} did not finish in {SUITE_TIMEOUT} s (log: {log})")
     # A launcher the judge killed left its subshell to this process; one that
     # ended first (its candidate quicker than the kill) was waited for by the judge.
-    reap_orphans()
+    # Every orphaned descendant (a launcher's subshell whose launcher the judge killed) waited for, so
+    # that every candidate has exited and written its counts.
+    if not reap_orphans(ORPHAN_TIMEOUT):
+        raise Failure(f"a candidate was still running {ORPHAN_TIMEOUT} s after its judge ended")
     statuses = [f.read_text().strip() for f in sorted(exits.iterdir())]
     text = log.read_text(errors="replace")
     score = re.search(r"^SCORE (\d+)/(\d+) points.*$", text, re.M)
