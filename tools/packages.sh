@@ -11,15 +11,19 @@ pathlab_core=(build-essential cmake ninja-build pkg-config python3 libglm-dev li
 pathlab_build=("${pathlab_core[@]}" git libembree-dev libglfw3-dev libimgui-dev python3-matplotlib libfast-float-dev)
 # The write-up (tools/writeup): Markdown for the students' answers, Chromium to print the PDF.
 pathlab_writeup=(python3-markdown chromium)
+# The web build (preset web, docs/web.md): Emscripten (it brings Node.js), and the
+# header-only image codecs it compiles in place of OpenImageIO.
+pathlab_web=(emscripten libstb-dev libtinyexr-dev)
 # The tests: the GUI on a virtual display (Xvfb, Mesa's software OpenGL) looked
 # at with ImageMagick, the grader's sandbox (bubblewrap; libseccomp for its uid mode's pathlab-confine), and
 # the write-up in a browser (Chromium; tidy validates its HTML, poppler-utils reads its PDF),
 # ccache, which serves the nested builds of the grading tests (quickstart.sh), and a YAML reader
 # for the grading platforms' files (Autolab's assessment, GitHub Classroom's workflow), and strace, which
 # lists every program a grade runs outside its sandbox (docs/threat-model.md); the formatter and the
-# linter (clang-format, pyflakes: tools/check-format).
+# linter (clang-format, pyflakes: tools/check-format), and the web build's packages.
 pathlab_test=(xvfb xauth libgl1-mesa-dri libglx-mesa0 imagemagick bubblewrap libseccomp-dev "${pathlab_writeup[@]}" tidy
-              poppler-utils ccache python3-yaml strace clang-format pyflakes3)
+              poppler-utils ccache python3-yaml strace clang-format pyflakes3
+              "${pathlab_web[@]}")
 # Grading: the core and the sandbox (bubblewrap; util-linux for setpriv, prlimit and ipcrm;
 # libseccomp for pathlab-confine, the uid mode's system-call filter).
 pathlab_grading=("${pathlab_core[@]}" bubblewrap util-linux libseccomp-dev)

@@ -78,6 +78,10 @@ void find(void* module, const char* name, Function& function, std::string& error
   if (!function && error.empty()) error = std::string("it has no function ") + name;
 }
 
+#ifdef PATHLAB_IMAGE_CODEC_LINKED
+// The web build links its codec in (framework/CMakeLists.txt): there is no module to load.
+Codec loadCodec() { return Codec{&codecEncode, &codecOpen, &codecRead, &codecClose, ""}; }
+#else
 Codec loadCodec() {
   // Where the build put it (PATHLAB_IMAGE_CODEC_PATH, framework/CMakeLists.txt),
   // then beside the program (a program copied elsewhere with the module);
@@ -111,6 +115,7 @@ Codec loadCodec() {
                 ") did not load (" + tried + ")";
   return codec;
 }
+#endif
 
 const Codec& imageCodec() {
   static const Codec loaded = loadCodec();  // once, thread-safe
