@@ -18,6 +18,7 @@
 #include <tinyexr.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>

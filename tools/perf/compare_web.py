@@ -22,9 +22,7 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-from tools.web.build import PACKAGES, WebBuildError, build_web, missing_tools, node_command
-
-ROOT = Path(__file__).resolve().parents[2]
+from tools.web.build import PACKAGES, ROOT, WebBuildError, build_web, missing_tools, node_command
 
 
 def samples_per_second(command: list, scratch: Path) -> float:
